@@ -1,0 +1,365 @@
+#include "teaching/records/learner_store.hpp"
+
+#include <sqlite3.h>
+
+#include <cmath>
+
+#include "engine/core/error.hpp"
+#include "engine/core/json_file.hpp"
+#include "teaching/records/database_file_check.hpp"
+#include "teaching/records/record_queries.hpp"
+#include "teaching/records/record_writes.hpp"
+#include "teaching/records/schema_migrations.hpp"
+#include "teaching/records/sqlite_handle.hpp"
+
+namespace sc::records {
+namespace {
+
+// Plain words for the storage faults a learner may meet; anything else keeps SQLite's own text.
+std::string describe(const SqliteError& e) {
+  switch (e.primary_code()) {
+    case SQLITE_FULL: return "the disk or the database is full";
+    case SQLITE_READONLY: return "the database is read-only";
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED: return "the database is locked by another program";
+    case SQLITE_IOERR: return std::string("disk I/O error (") + e.what() + ")";
+    case SQLITE_CANTOPEN:
+    case SQLITE_PERM: return "the database file cannot be opened for writing";
+    default: return e.what();
+  }
+}
+
+void require_text(std::string_view value, std::string_view what) {
+  if (value.empty()) throw InputError("learner record", std::string(what) + " is empty");
+}
+
+void require_json(const std::string& text, std::string_view what) {
+  if (!Json::accept(text)) throw InputError("learner record", std::string(what) + " is not valid JSON");
+}
+
+}  // namespace
+
+template <typename Fn>
+auto LearnerStore::read(Fn&& query) const {
+  try {
+    return query(*db_);
+  } catch (const SqliteError& e) {
+    throw InputError(path_.string(), "cannot be read (" + describe(e) + ")");
+  }
+}
+
+template <typename Fn>
+auto LearnerStore::write_now(const std::string& what, Fn&& write) {
+  if (options_.read_only) throw InputError(path_.string(), "cannot " + what + ": the database was opened read-only");
+  try {
+    if (db_->is_read_only()) db_ = connect();
+    SqliteTransaction transaction(*db_);
+    auto result = write(*db_);
+    transaction.commit();
+    return result;
+  } catch (const SqliteError& e) {
+    throw InputError(path_.string(), "cannot " + what + ": " + describe(e));
+  }
+}
+
+LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions options) : options_(options) {
+  const auto dir = data_dir.empty() ? default_data_dir() : data_dir;
+  path_ = dir / kDatabaseFileName;
+  if (options_.read_only) {
+    if (!std::filesystem::exists(path_)) throw InputError(path_.string(), "no such database");
+  } else {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec && !std::filesystem::is_directory(dir))
+      throw InputError(dir.string(), "cannot create the data directory: " + ec.message());
+  }
+  const auto state = check_database_file(path_, current_schema_version());
+  if (state.is_new && options_.read_only) throw InputError(path_.string(), "is empty (no SkillCoach records)");
+  db_ = connect();
+  if (!options_.read_only) {
+    load_spill_file();
+    if (!pending_.empty()) {
+      const auto result = flush();
+      if (!result.message.empty()) open_message_ += (open_message_.empty() ? "" : "; ") + result.message;
+    }
+  }
+}
+
+LearnerStore::~LearnerStore() {
+  if (pending_.empty() || options_.read_only) return;
+  try {
+    flush();  // on failure the pending writes are already in the spill file
+  } catch (...) {  // a destructor must not throw; nothing more can be done here
+  }
+}
+
+std::filesystem::path LearnerStore::spill_path() const {
+  auto spill = path_;
+  spill += ".pending.json";
+  return spill;
+}
+
+int LearnerStore::schema_version() const {
+  return read([](SqliteDb& db) { return static_cast<int>(db.query_int("PRAGMA user_version")); });
+}
+
+bool LearnerStore::writable() const { return !options_.read_only && !db_->is_read_only(); }
+
+std::unique_ptr<SqliteDb> LearnerStore::connect() const {
+  const std::string where = path_.string();
+  try {
+    auto db = std::make_unique<SqliteDb>(
+        path_, options_.read_only ? SqliteDb::Mode::ReadOnly : SqliteDb::Mode::ReadWriteCreate);
+    db->set_busy_timeout(options_.busy_timeout_ms);
+    db->exec("PRAGMA foreign_keys = ON");
+    if (db->is_read_only()) {
+      require_current_schema(*db);
+      return db;
+    }
+    // WAL: readers never block the trainer's writes, and a commit is one append to the log.
+    // synchronous=FULL: the log is fsynced at every commit, so a finished trial survives a power cut too,
+    // not only a crash of the program (NORMAL would only guarantee the latter). A commit per trial
+    // (one every few seconds at most) makes the fsync cost irrelevant; see app/bench/records_bench.cpp.
+    const auto mode = db->query_text("PRAGMA journal_mode = WAL");
+    if (mode != "wal") throw InputError(where, "cannot use write-ahead logging (journal mode stays " + mode + ")");
+    db->exec("PRAGMA synchronous = FULL");
+    if (options_.max_page_count > 0)
+      db->query_int("PRAGMA max_page_count = " + std::to_string(options_.max_page_count));
+    migrate(*db, schema_migrations(), where);
+    return db;
+  } catch (const SqliteError& e) {
+    const int code = e.primary_code();
+    if (options_.read_only || (code != SQLITE_READONLY && code != SQLITE_CANTOPEN && code != SQLITE_PERM))
+      throw InputError(where, "cannot be opened (" + describe(e) + ")");
+  }
+  // The directory is read-only, so SQLite cannot create the WAL index: read through an immutable
+  // connection (nobody can be writing here) and queue every write until the database is writable.
+  try {
+    auto db = std::make_unique<SqliteDb>(path_, SqliteDb::Mode::ReadOnly, "immutable=1");
+    db->exec("PRAGMA foreign_keys = ON");
+    require_current_schema(*db);
+    return db;
+  } catch (const SqliteError& e) {
+    throw InputError(where, "cannot be opened (" + describe(e) + ")");
+  }
+}
+
+void LearnerStore::require_current_schema(SqliteDb& db) const {
+  const auto version = db.query_int("PRAGMA user_version");
+  if (version != current_schema_version()) {
+    throw InputError(path_.string(), "has schema version " + std::to_string(version) + " and needs upgrading to " +
+                                         std::to_string(current_schema_version()) + ", but it is read-only");
+  }
+}
+
+void LearnerStore::load_spill_file() {
+  const auto spill = spill_path();
+  if (!std::filesystem::exists(spill)) return;
+  try {
+    for (auto& write : read_spill_file(spill)) pending_.push_back(std::move(write));
+  } catch (const InputError& e) {
+    // Never overwrite what may be a learner's only copy of a trial: move it aside and say so.
+    auto aside = spill;
+    aside += ".unreadable";
+    for (int n = 2; std::filesystem::exists(aside); ++n) {
+      aside = spill;
+      aside += ".unreadable" + std::to_string(n);
+    }
+    std::error_code ec;
+    std::filesystem::rename(spill, aside, ec);
+    open_message_ = std::string(e.what()) + (ec ? "; left in place" : "; moved to " + aside.string());
+  }
+}
+
+std::int64_t LearnerStore::ensure_learner(std::string_view name, std::string_view created) {
+  require_text(name, "learner name");
+  require_text(created, "learner creation time");
+  return write_now("save learner \"" + std::string(name) + "\"",
+                   [&](SqliteDb& db) { return insert_learner_if_new(db, name, created); });
+}
+
+std::int64_t LearnerStore::begin_session(const NewSession& session) {
+  require_text(session.learner, "learner name");
+  require_text(session.task, "task");
+  require_text(session.condition, "condition");
+  require_text(session.started, "session start time");
+  require_json(session.settings_json, "session settings");
+  const auto id = write_now("start a session for \"" + session.learner + "\"", [&](SqliteDb& db) {
+    return insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
+  });
+  last_seq_[id] = 0;
+  return id;
+}
+
+SaveResult LearnerStore::record_trial(const TrialRecord& trial) {
+  require_session(trial.session_id);
+  require_text(trial.task, "trial task");
+  require_text(trial.device, "trial device");
+  require_text(trial.started, "trial start time");
+  require_text(trial.finished, "trial end time");
+  require_json(trial.scenario_json, "trial scenario");
+  require_json(trial.trajectory_json, "trial trajectory");
+  if (trial.score && !std::isfinite(*trial.score)) throw InputError("learner record", "trial score is not finite");
+  if (trial.round < 1) throw InputError("learner record", "trial round must be 1 or more");
+  return submit(TrialWrite{trial, next_seq(trial.session_id)});
+}
+
+SaveResult LearnerStore::save_diagnosis(const DiagnosisRecord& diagnosis) {
+  require_session(diagnosis.session_id);
+  require_json(diagnosis.expertise_json, "diagnosis expertise");
+  require_json(diagnosis.targets_json, "diagnosis targets");
+  require_text(diagnosis.extractor, "diagnosis extractor");
+  require_text(diagnosis.created, "diagnosis time");
+  return submit(diagnosis);
+}
+
+SaveResult LearnerStore::save_curriculum(const CurriculumRecord& curriculum) {
+  require_session(curriculum.session_id);
+  require_text(curriculum.condition, "curriculum condition");
+  require_json(curriculum.items_json, "curriculum items");
+  require_text(curriculum.created, "curriculum time");
+  for (const auto& drill : curriculum.drills) {
+    require_json(drill.skills_json, "drill skills");
+    require_json(drill.content_json, "drill content");
+  }
+  return submit(curriculum);
+}
+
+SaveResult LearnerStore::save_progress(std::int64_t session_id, const SessionProgress& progress) {
+  require_session(session_id);
+  if (progress.round < 1 || progress.item_index < 0) throw InputError("learner record", "invalid session progress");
+  return submit(ProgressWrite{session_id, progress});
+}
+
+SaveResult LearnerStore::finish_session(std::int64_t session_id, std::string_view finished) {
+  require_session(session_id);
+  require_text(finished, "session end time");
+  return submit(FinishWrite{session_id, std::string(finished)});
+}
+
+SaveResult LearnerStore::submit(PendingWrite write) {
+  pending_.push_back(std::move(write));
+  return flush();  // the new write is last in the queue, so it is stored iff the queue empties
+}
+
+SaveResult LearnerStore::flush() {
+  if (pending_.empty()) return {true, 0, {}};
+  std::string problem;
+  if (try_write_pending(problem)) {
+    std::error_code ec;
+    std::filesystem::remove(spill_path(), ec);  // everything it held is in the database now
+    return {true, 0, {}};
+  }
+  const auto count = pending_.size();
+  return {false, count,
+          path_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") +
+              " not saved yet (" + problem + "); " + spill_pending() + "; will retry on the next save"};
+}
+
+bool LearnerStore::try_write_pending(std::string& problem) {
+  if (options_.read_only) {
+    problem = "the database was opened read-only";
+    return false;
+  }
+  try {
+    if (db_->is_read_only()) db_ = connect();  // the file or directory may have become writable
+    if (db_->is_read_only()) {
+      problem = "the database file or its directory is read-only";
+      return false;
+    }
+    while (!pending_.empty()) {
+      SqliteTransaction transaction(*db_);
+      apply_write(*db_, pending_.front());
+      transaction.commit();
+      pending_.pop_front();
+    }
+    return true;
+  } catch (const SqliteError& e) {
+    problem = describe(e);
+  } catch (const InputError& e) {
+    problem = e.what();
+  }
+  return false;
+}
+
+std::string LearnerStore::spill_pending() {
+  if (options_.read_only) return "kept in memory only (store opened read-only)";
+  try {
+    write_spill_file(spill_path(), path_, pending_);
+    return "kept in memory and in " + spill_path().string();
+  } catch (const InputError& e) {
+    return std::string("kept in memory only (") + e.what() + ")";
+  }
+}
+
+int LearnerStore::next_seq(std::int64_t session_id) {
+  auto it = last_seq_.find(session_id);
+  if (it == last_seq_.end()) {
+    int last = 0;
+    try {
+      last = query_last_seq(*db_, session_id);
+    } catch (const SqliteError&) {  // unreadable now: the pending queue below still orders this session
+    }
+    for (const auto& write : pending_) {
+      if (const auto* trial = std::get_if<TrialWrite>(&write); trial && trial->trial.session_id == session_id)
+        last = std::max(last, trial->seq);
+    }
+    it = last_seq_.emplace(session_id, last).first;
+  }
+  return ++it->second;
+}
+
+void LearnerStore::require_session(std::int64_t session_id) const {
+  if (last_seq_.count(session_id) != 0) return;
+  bool known = true;
+  try {
+    known = query_session(*db_, session_id).has_value();
+  } catch (const SqliteError&) {  // cannot check now; a write for an unknown session would stay pending
+  }
+  if (!known) throw InputError(path_.string(), "unknown session id " + std::to_string(session_id));
+}
+
+std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_view learner,
+                                                                std::string_view task) const {
+  const auto sessions = read([&](SqliteDb& db) { return query_unfinished_sessions(db, learner, task); });
+  for (const auto& row : sessions) {
+    ResumePoint point{row, read([&](SqliteDb& db) { return query_trial_count(db, row.id); })};
+    bool finished = false;
+    // Writes still pending are part of the learner's work: apply them in order.
+    for (const auto& write : pending_) {
+      if (session_of(write) != row.id) continue;
+      if (const auto* trial = std::get_if<TrialWrite>(&write)) {
+        ++point.trials_done;
+        if (trial->trial.progress_after) point.session.progress = *trial->trial.progress_after;
+      } else if (const auto* progress = std::get_if<ProgressWrite>(&write)) {
+        point.session.progress = progress->progress;
+      } else if (std::holds_alternative<FinishWrite>(write)) {
+        finished = true;
+      }
+    }
+    if (!finished) return point;
+  }
+  return std::nullopt;
+}
+
+std::optional<SessionRow> LearnerStore::session(std::int64_t session_id) const {
+  return read([&](SqliteDb& db) { return query_session(db, session_id); });
+}
+
+std::vector<LearnerOverview> LearnerStore::list_learners() const {
+  return read([](SqliteDb& db) { return query_learners(db); });
+}
+
+std::vector<StoredTrial> LearnerStore::trials_of_session(std::int64_t session_id) const {
+  return read([&](SqliteDb& db) { return query_trials(db, session_id); });
+}
+
+std::vector<DiagnosisRecord> LearnerStore::diagnoses_of_session(std::int64_t session_id) const {
+  return read([&](SqliteDb& db) { return query_diagnoses(db, session_id); });
+}
+
+std::vector<CurriculumRecord> LearnerStore::curricula_of_session(std::int64_t session_id) const {
+  return read([&](SqliteDb& db) { return query_curricula(db, session_id); });
+}
+
+}  // namespace sc::records

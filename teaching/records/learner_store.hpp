@@ -1,0 +1,106 @@
+#pragma once
+// LearnerStore: everything a learner does, kept in one SQLite file (docs/database.md documents the
+// schema). The trainer writes through it as a session goes; the instructor review and the export read
+// it back.
+//
+// Safety rules (issue 7 and issue 9):
+//  - WAL journal, synchronous=FULL, foreign keys on; each record is committed in its own transaction the
+//    moment it is handed over, and a trial is committed together with its resume point.
+//  - A damaged, foreign or newer-schema file is refused with a one-line sc::InputError and never written.
+//  - A write that fails for a storage reason (disk full, read-only, locked, I/O error) does not throw: the
+//    record stays in an in-memory queue, is spilled to "<db>.pending.json" (atomically), and is retried on
+//    the next write or flush(). The next store opened on the database replays a spill file it finds.
+// Not thread-safe: one store per thread (SQLite itself handles other processes).
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "teaching/records/data_dir.hpp"
+#include "teaching/records/pending_writes.hpp"
+#include "teaching/records/record_types.hpp"
+
+namespace sc::records {
+
+class SqliteDb;
+
+struct StoreOptions {
+  bool read_only = false;         // review/export: never writes (writes stay pending, nothing is spilled)
+  int busy_timeout_ms = 2000;     // how long a write waits for another process's lock before it is queued
+  std::int64_t max_page_count = 0;  // 0: unlimited; otherwise the database behaves as a full disk at that size
+};
+
+class LearnerStore {
+ public:
+  static constexpr std::string_view kDatabaseFileName = "skillcoach.db";
+
+  // Opens (or creates) `data_dir`/skillcoach.db; an empty `data_dir` means default_data_dir().
+  // Throws sc::InputError for a damaged/foreign/newer database, or when it cannot be opened at all.
+  explicit LearnerStore(const std::filesystem::path& data_dir, StoreOptions options = {});
+  ~LearnerStore();  // tries a last flush; whatever is still pending stays in the spill file
+  LearnerStore(const LearnerStore&) = delete;
+  LearnerStore& operator=(const LearnerStore&) = delete;
+
+  const std::filesystem::path& database_path() const { return path_; }
+  std::filesystem::path spill_path() const;
+  int schema_version() const;
+  // False while the database cannot be written (opened read-only, or the file/directory is read-only).
+  bool writable() const;
+
+  // ---- the trainer's writes ----
+  // Learners and sessions are created before any work exists, so a failure throws sc::InputError
+  // (the app shows it and can retry) instead of being queued.
+  std::int64_t ensure_learner(std::string_view name, std::string_view created);
+  std::int64_t begin_session(const NewSession& session);
+  // These never throw for storage faults (see SaveResult); they throw sc::InputError for an invalid
+  // record (unknown session, payload that is not JSON, empty task/device/timestamps, non-finite score).
+  SaveResult record_trial(const TrialRecord& trial);  // assigns the next seq of the session
+  SaveResult save_diagnosis(const DiagnosisRecord& diagnosis);
+  SaveResult save_curriculum(const CurriculumRecord& curriculum);
+  SaveResult save_progress(std::int64_t session_id, const SessionProgress& progress);
+  SaveResult finish_session(std::int64_t session_id, std::string_view finished);
+  // Retries the pending writes (reopening the database if it was read-only).
+  SaveResult flush();
+  std::size_t pending_count() const { return pending_.size(); }
+  // Non-empty when opening found something the user should know (e.g. an unreadable spill file).
+  const std::string& open_message() const { return open_message_; }
+
+  // ---- resuming ----
+  // The newest unfinished session of `learner` for `task` (any task if empty), with pending writes applied.
+  std::optional<ResumePoint> find_unfinished_session(std::string_view learner, std::string_view task = {}) const;
+
+  // ---- instructor review (database content only) ----
+  std::optional<SessionRow> session(std::int64_t session_id) const;
+  std::vector<LearnerOverview> list_learners() const;
+  std::vector<StoredTrial> trials_of_session(std::int64_t session_id) const;  // in seq order
+  std::vector<DiagnosisRecord> diagnoses_of_session(std::int64_t session_id) const;  // by round
+  std::vector<CurriculumRecord> curricula_of_session(std::int64_t session_id) const;  // by round, drills by index
+
+ private:
+  std::unique_ptr<SqliteDb> connect() const;
+  void require_current_schema(SqliteDb& db) const;
+  void load_spill_file();
+  SaveResult submit(PendingWrite write);
+  int next_seq(std::int64_t session_id);
+  void require_session(std::int64_t session_id) const;
+  bool try_write_pending(std::string& problem);
+  std::string spill_pending();
+  template <typename Fn>
+  auto read(Fn&& query) const;  // runs a query; SQLite failures become sc::InputError
+  template <typename Fn>
+  auto write_now(const std::string& what, Fn&& write);  // one transaction; failures throw sc::InputError
+
+  std::filesystem::path path_;
+  StoreOptions options_;
+  std::unique_ptr<SqliteDb> db_;
+  std::deque<PendingWrite> pending_;
+  std::map<std::int64_t, int> last_seq_;  // per session: last seq handed out
+  std::string open_message_;
+};
+
+}  // namespace sc::records

@@ -1,0 +1,110 @@
+#include "teaching/records/record_writes.hpp"
+
+namespace sc::records {
+namespace {
+
+void update_progress(SqliteDb& db, std::int64_t session_id, const SessionProgress& progress) {
+  db.prepare("UPDATE sessions SET round = ?1, phase = ?2, item_index = ?3 WHERE id = ?4")
+      .bind(1, std::int64_t{progress.round})
+      .bind(2, to_string(progress.phase))
+      .bind(3, std::int64_t{progress.item_index})
+      .bind(4, session_id)
+      .run();
+}
+
+void insert_trial(SqliteDb& db, const TrialWrite& write) {
+  const TrialRecord& t = write.trial;
+  db.prepare(
+        "INSERT INTO trials(session_id, seq, kind, round, drill_index, task, scenario, trajectory, score, device,"
+        " started, finished) VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12)"
+        " ON CONFLICT(session_id, seq) DO NOTHING")
+      .bind(1, t.session_id)
+      .bind(2, std::int64_t{write.seq})
+      .bind(3, to_string(t.kind))
+      .bind(4, std::int64_t{t.round})
+      .bind(5, t.drill_index ? std::optional<std::int64_t>(*t.drill_index) : std::nullopt)
+      .bind(6, t.task)
+      .bind(7, t.scenario_json)
+      .bind(8, t.trajectory_json)
+      .bind(9, t.score)
+      .bind(10, t.device)
+      .bind(11, t.started)
+      .bind(12, t.finished)
+      .run();
+  if (t.progress_after) update_progress(db, t.session_id, *t.progress_after);
+}
+
+void upsert_diagnosis(SqliteDb& db, const DiagnosisRecord& d) {
+  db.prepare(
+        "INSERT INTO diagnoses(session_id, round, expertise, targets, extractor, model_id, created)"
+        " VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7) ON CONFLICT(session_id, round) DO UPDATE SET"
+        " expertise = excluded.expertise, targets = excluded.targets, extractor = excluded.extractor,"
+        " model_id = excluded.model_id, created = excluded.created")
+      .bind(1, d.session_id)
+      .bind(2, std::int64_t{d.round})
+      .bind(3, d.expertise_json)
+      .bind(4, d.targets_json)
+      .bind(5, d.extractor)
+      .bind(6, d.model_id)
+      .bind(7, d.created)
+      .run();
+}
+
+void upsert_curriculum(SqliteDb& db, const CurriculumRecord& c) {
+  auto upsert = db.prepare(
+      "INSERT INTO curricula(session_id, round, condition, items, created) VALUES(?1, ?2, ?3, ?4, ?5)"
+      " ON CONFLICT(session_id, round) DO UPDATE SET condition = excluded.condition, items = excluded.items,"
+      " created = excluded.created RETURNING id");
+  upsert.bind(1, c.session_id).bind(2, std::int64_t{c.round}).bind(3, c.condition).bind(4, c.items_json);
+  upsert.bind(5, c.created);
+  upsert.step();
+  const std::int64_t curriculum_id = upsert.column_int(0);
+  upsert.run();  // finish the statement before the next one
+  db.prepare("DELETE FROM drills WHERE curriculum_id = ?1").bind(1, curriculum_id).run();
+  auto insert = db.prepare("INSERT INTO drills(curriculum_id, idx, skills, content) VALUES(?1, ?2, ?3, ?4)");
+  for (const auto& drill : c.drills) {
+    insert.bind(1, curriculum_id).bind(2, std::int64_t{drill.index}).bind(3, drill.skills_json);
+    insert.bind(4, drill.content_json).run();
+  }
+}
+
+}  // namespace
+
+std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::string_view created) {
+  db.prepare("INSERT INTO learners(name, created) VALUES(?1, ?2) ON CONFLICT(name) DO NOTHING")
+      .bind(1, name)
+      .bind(2, created)
+      .run();
+  auto select = db.prepare("SELECT id FROM learners WHERE name = ?1");
+  select.bind(1, name);
+  select.step();
+  return select.column_int(0);
+}
+
+std::int64_t insert_session(SqliteDb& db, std::int64_t learner_id, const NewSession& s) {
+  db.prepare("INSERT INTO sessions(learner_id, task, condition, seed, settings, started) VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
+      .bind(1, learner_id)
+      .bind(2, s.task)
+      .bind(3, s.condition)
+      .bind(4, static_cast<std::int64_t>(s.seed))  // bit pattern kept; read back as unsigned
+      .bind(5, s.settings_json)
+      .bind(6, s.started)
+      .run();
+  return db.last_insert_id();
+}
+
+void apply_write(SqliteDb& db, const PendingWrite& write) {
+  std::visit(
+      [&db](const auto& w) {
+        using T = std::decay_t<decltype(w)>;
+        if constexpr (std::is_same_v<T, TrialWrite>) insert_trial(db, w);
+        if constexpr (std::is_same_v<T, DiagnosisRecord>) upsert_diagnosis(db, w);
+        if constexpr (std::is_same_v<T, CurriculumRecord>) upsert_curriculum(db, w);
+        if constexpr (std::is_same_v<T, ProgressWrite>) update_progress(db, w.session_id, w.progress);
+        if constexpr (std::is_same_v<T, FinishWrite>)
+          db.prepare("UPDATE sessions SET finished = ?1 WHERE id = ?2").bind(1, w.finished).bind(2, w.session_id).run();
+      },
+      write);
+}
+
+}  // namespace sc::records

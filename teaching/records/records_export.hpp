@@ -1,0 +1,21 @@
+#pragma once
+// The whole learner database as one JSON document (`skillcoach export`): learners, their sessions with
+// the review summary, every trial with its trajectory-file document embedded as JSON, diagnoses by round
+// and curricula with their drills. Deterministic: same database, same bytes.
+#include <filesystem>
+
+#include "engine/core/json_file.hpp"
+#include "teaching/records/learner_store.hpp"
+
+namespace sc::records {
+
+inline constexpr std::string_view kExportFormat = "skillcoach-records";
+inline constexpr int kExportVersion = 1;
+
+Json export_records(const LearnerStore& store);
+
+// Opens `data_dir` read-only and writes the export to `out` atomically; throws sc::InputError (missing,
+// damaged, foreign or newer database; unwritable output). Returns the number of trials exported.
+std::size_t export_database(const std::filesystem::path& data_dir, const std::filesystem::path& out);
+
+}  // namespace sc::records

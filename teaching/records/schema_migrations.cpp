@@ -1,0 +1,115 @@
+#include "teaching/records/schema_migrations.hpp"
+
+#include <array>
+#include <string>
+
+#include "engine/core/error.hpp"
+
+namespace sc::records {
+namespace {
+
+// Version 1: the schema of issue 7. Natural keys (session + seq, session + round, curriculum + index)
+// are UNIQUE so that replaying a pending write after a crash can never duplicate a record.
+constexpr std::string_view kSchemaV1 = R"sql(
+CREATE TABLE learners(
+  id      INTEGER PRIMARY KEY,
+  name    TEXT NOT NULL UNIQUE CHECK(length(trim(name)) > 0),
+  created TEXT NOT NULL
+);
+CREATE TABLE sessions(
+  id         INTEGER PRIMARY KEY,
+  learner_id INTEGER NOT NULL REFERENCES learners(id) ON DELETE CASCADE,
+  task       TEXT NOT NULL CHECK(length(task) > 0),
+  condition  TEXT NOT NULL CHECK(length(condition) > 0),
+  seed       INTEGER NOT NULL,
+  settings   TEXT NOT NULL DEFAULT '{}' CHECK(json_valid(settings)),
+  started    TEXT NOT NULL,
+  finished   TEXT,
+  round      INTEGER NOT NULL DEFAULT 1 CHECK(round >= 1),
+  phase      TEXT NOT NULL DEFAULT 'pretest'
+             CHECK(phase IN ('pretest', 'diagnosis', 'drills', 'evaluation', 'summary')),
+  item_index INTEGER NOT NULL DEFAULT 0 CHECK(item_index >= 0)
+);
+CREATE INDEX sessions_by_learner ON sessions(learner_id, started);
+CREATE TABLE trials(
+  id          INTEGER PRIMARY KEY,
+  session_id  INTEGER NOT NULL REFERENCES sessions(id) ON DELETE CASCADE,
+  seq         INTEGER NOT NULL CHECK(seq >= 1),
+  kind        TEXT NOT NULL CHECK(kind IN ('pretest', 'demo', 'practice', 'eval')),
+  round       INTEGER NOT NULL CHECK(round >= 1),
+  drill_index INTEGER,
+  task        TEXT NOT NULL,
+  scenario    TEXT NOT NULL CHECK(json_valid(scenario)),
+  trajectory  TEXT NOT NULL CHECK(json_valid(trajectory)),
+  score       REAL,
+  device      TEXT NOT NULL,
+  started     TEXT NOT NULL,
+  finished    TEXT NOT NULL,
+  UNIQUE(session_id, seq)
+);
+CREATE TABLE diagnoses(
+  id         INTEGER PRIMARY KEY,
+  session_id INTEGER NOT NULL REFERENCES sessions(id) ON DELETE CASCADE,
+  round      INTEGER NOT NULL CHECK(round >= 1),
+  expertise  TEXT NOT NULL CHECK(json_valid(expertise)),
+  targets    TEXT NOT NULL CHECK(json_valid(targets)),
+  extractor  TEXT NOT NULL,
+  model_id   TEXT NOT NULL DEFAULT '',
+  created    TEXT NOT NULL,
+  UNIQUE(session_id, round)
+);
+CREATE TABLE curricula(
+  id         INTEGER PRIMARY KEY,
+  session_id INTEGER NOT NULL REFERENCES sessions(id) ON DELETE CASCADE,
+  round      INTEGER NOT NULL CHECK(round >= 1),
+  condition  TEXT NOT NULL,
+  items      TEXT NOT NULL CHECK(json_valid(items)),
+  created    TEXT NOT NULL,
+  UNIQUE(session_id, round)
+);
+CREATE TABLE drills(
+  id            INTEGER PRIMARY KEY,
+  curriculum_id INTEGER NOT NULL REFERENCES curricula(id) ON DELETE CASCADE,
+  idx           INTEGER NOT NULL CHECK(idx >= 0),
+  skills        TEXT NOT NULL CHECK(json_valid(skills)),
+  content       TEXT NOT NULL CHECK(json_valid(content)),
+  UNIQUE(curriculum_id, idx)
+);
+)sql";
+
+constexpr std::array<Migration, 1> kMigrations{{
+    {1, "learners, sessions, trials, diagnoses, curricula and drills", kSchemaV1},
+}};
+
+}  // namespace
+
+std::span<const Migration> schema_migrations() { return kMigrations; }
+
+int current_schema_version() { return kMigrations.back().version; }
+
+void migrate(SqliteDb& db, std::span<const Migration> migrations, std::string_view file) {
+  const int target = migrations.empty() ? 0 : migrations.back().version;
+  // Cheap check outside a transaction: an up-to-date database is not locked for writing on open.
+  if (db.query_int("PRAGMA user_version") == target) return;
+  SqliteTransaction transaction(db);
+  // Re-read inside the write lock: another process may have migrated meanwhile.
+  const auto version = db.query_int("PRAGMA user_version");
+  if (version > target) {
+    throw InputError(file, "schema version " + std::to_string(version) + " is newer than this build (" +
+                               std::to_string(target) + "); it was not changed");
+  }
+  for (const auto& migration : migrations) {
+    if (migration.version <= version) continue;
+    try {
+      db.exec(migration.sql);
+    } catch (const SqliteError& e) {
+      throw SqliteError(e.code(), "migration to schema version " + std::to_string(migration.version) + " (" +
+                                      std::string(migration.description) + ") failed: " + e.what());
+    }
+  }
+  db.exec("PRAGMA application_id = " + std::to_string(kSkillCoachApplicationId));
+  db.exec("PRAGMA user_version = " + std::to_string(target));
+  transaction.commit();
+}
+
+}  // namespace sc::records
