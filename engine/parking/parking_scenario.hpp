@@ -1,0 +1,42 @@
+#pragma once
+// A parking scenario: everything that, with the action sequence, determines an episode.
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "engine/parking/parking_lot.hpp"
+
+namespace sc {
+
+class Rng;
+
+enum class LotVariant {
+  Classic,  // the paper's empty, unbounded lot (the only variant comparable with the paper)
+  Parked,   // parked cars in other spots and walls around the lot
+};
+
+std::string_view to_string(LotVariant variant);
+// Throws InputError naming `where` for anything but "classic" or "parked".
+LotVariant parse_lot_variant(std::string_view text, std::string_view where);
+
+struct ParkingScenario {
+  double heading0 = 0.0;  // initial heading (rad); the car starts at (0, 0) at rest
+  int goal_spot = 0;      // 0..29, reference order (see spot_pose)
+  LotVariant variant = LotVariant::Classic;
+  std::uint32_t obstacle_seed = 0;  // parked-car layout (ignored by the classic lot)
+  bool reverse_in = false;          // goal heading flipped: the car must end nose-out (backed in)
+
+  bool operator==(const ParkingScenario&) const = default;
+};
+
+// The goal pose: the spot centre, heading into the spot (flipped by pi for reverse-in goals).
+Pose goal_pose(const ParkingScenario& scenario);
+// The obstacles of the scenario's lot (empty for the classic lot).
+ParkingLayout make_layout(const ParkingScenario& scenario);
+
+// Draws a scenario like the reference's reset(): heading0 = 2*pi*U[0,1), goal spot uniform over the 30
+// spots; then an obstacle seed, and reverse_in with the given probability (0 = the paper's task).
+// Always consumes the same number of values, so the variant does not change the headings and goals.
+ParkingScenario sample_parking_scenario(Rng& rng, LotVariant variant, double reverse_in_probability = 0.0);
+
+}  // namespace sc
