@@ -12,8 +12,10 @@ namespace sc {
 Json parse_json_text(std::string_view text, std::string_view source) {
   try {
     return Json::parse(text.begin(), text.end());
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {
     // nlohmann's message looks like "[json.exception.parse_error.101] parse error at line 3, column 5: ...".
+    // Also catches out_of_range.406 ("number overflow parsing '1e999'"), which parse() throws for numbers
+    // beyond double range.
     std::string what = e.what();
     auto pos = what.find("] ");
     throw InputError(source, "not valid JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
