@@ -1,0 +1,49 @@
+#include "teaching/expertise/expertise_json.hpp"
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+Segmentation seq(const std::vector<int>& skills) {
+  Segmentation s;
+  int t = 0;
+  for (int m : skills) {
+    s.segments.push_back({m, t, t + 2});
+    t += 2;
+  }
+  return s;
+}
+
+TEST(ExpertiseJson, RoundTrips) {
+  const ExpertiseEstimate e =
+      estimate_expertise({{3, seq({0, 1, 2, 1}), seq({2}), -0.75}, {5, seq({2, 3}), seq({2, 3}), -0.1}}, 5, 2);
+  const Json doc = expertise_to_json(e);
+  EXPECT_EQ(doc["targets"], Json({0, 1}));  // E_0 = -0.75, E_1 = -0.75/2 - 0.75/4
+  EXPECT_EQ(doc["contributions"][1][1]["position"], 4);
+  const ExpertiseEstimate back = expertise_from_json(JsonView(parse_json_text(doc.dump(), "diag.json"), "diag.json"));
+  EXPECT_EQ(back.expertise, e.expertise);
+  EXPECT_EQ(back.occurrences, e.occurrences);
+  EXPECT_EQ(back.contributions, e.contributions);
+  EXPECT_EQ(back.ranking, e.ranking);
+  EXPECT_EQ(back.targets, e.targets);
+}
+
+TEST(ExpertiseJson, BadDocumentsNameThePath) {
+  Json doc = expertise_to_json(estimate_expertise({{0, seq({0, 1}), seq({}), -1.0}}, 2, 2));
+  doc["ranking"][0] = 9;
+  try {
+    expertise_from_json(JsonView(doc, "diag.json"));
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("diag.json: $.ranking[0]"), std::string::npos) << err.what();
+  }
+  doc = expertise_to_json(estimate_expertise({{0, seq({0, 1}), seq({}), -1.0}}, 2, 2));
+  doc["occurrences"].push_back(1);
+  EXPECT_THROW(expertise_from_json(JsonView(doc, "diag.json")), InputError);
+}
+
+}  // namespace
+}  // namespace sc
