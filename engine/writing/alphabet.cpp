@@ -26,10 +26,14 @@ std::string quoted(char c) { return std::string("'") + c + "'"; }
 
 std::string_view alphabet_name(AlphabetKind kind) { return kind == AlphabetKind::Classic ? "classic" : "balinese"; }
 
+std::string alphabet_name_problem(std::string_view name) {
+  if (name == "classic" || name == "balinese") return {};
+  return "unknown alphabet \"" + std::string(name) + "\" (expected \"classic\" or \"balinese\")";
+}
+
 AlphabetKind alphabet_from_name(std::string_view name, std::string_view where) {
-  if (name == "classic") return AlphabetKind::Classic;
-  if (name == "balinese") return AlphabetKind::Balinese;
-  throw InputError(where, "unknown alphabet \"" + std::string(name) + "\" (expected \"classic\" or \"balinese\")");
+  if (auto problem = alphabet_name_problem(name); !problem.empty()) throw InputError(where, problem);
+  return name == "classic" ? AlphabetKind::Classic : AlphabetKind::Balinese;
 }
 
 std::string_view alphabet_symbols(AlphabetKind kind) {

@@ -22,6 +22,8 @@ inline constexpr int kDrawersPerCharacter = 15;
 std::string_view alphabet_name(AlphabetKind kind);  // "classic" / "balinese"
 // Throws InputError(where, ...) listing the valid names.
 AlphabetKind alphabet_from_name(std::string_view name, std::string_view where);
+// The problem with a name ("unknown alphabet ..."), or an empty string when it names an alphabet.
+std::string alphabet_name_problem(std::string_view name);
 
 // Symbols in goal-index order.
 std::string_view alphabet_symbols(AlphabetKind kind);

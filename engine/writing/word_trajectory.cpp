@@ -17,15 +17,25 @@ std::vector<TracePoint> WordTrajectory::points() const {
   return pts;
 }
 
-void validate_word(AlphabetKind kind, std::string_view word, std::string_view where) {
-  if (word.empty()) throw InputError(where, "empty word");
+std::string word_problem(AlphabetKind kind, std::string_view word) {
+  if (word.empty()) return "empty word";
   if (word.size() > static_cast<std::size_t>(kMaxWordSymbols))
-    throw InputError(where, "word \"" + std::string(word) + "\" has " + std::to_string(word.size()) +
-                                " symbols; at most " + std::to_string(kMaxWordSymbols) + " fit the goal vector");
-  for (char c : word)
-    if (symbol_index(kind, c) < 0)
-      throw InputError(where, "'" + std::string(1, c) + "' is not a symbol of the " + std::string(alphabet_name(kind)) +
-                                  " alphabet (valid: " + std::string(alphabet_symbols(kind)) + ")");
+    return "word \"" + std::string(word) + "\" has " + std::to_string(word.size()) + " symbols; at most " +
+           std::to_string(kMaxWordSymbols) + " fit the goal vector";
+  for (char c : word) {
+    if (symbol_index(kind, c) >= 0) continue;
+    // Built with append: GCC 12's -Wrestrict misfires on a chain of operator+ here.
+    std::string problem = "'";
+    problem.push_back(c);
+    problem.append("' is not a symbol of the ").append(alphabet_name(kind));
+    problem.append(" alphabet (valid: ").append(alphabet_symbols(kind)).append(")");
+    return problem;
+  }
+  return {};
+}
+
+void validate_word(AlphabetKind kind, std::string_view word, std::string_view where) {
+  if (auto problem = word_problem(kind, word); !problem.empty()) throw InputError(where, problem);
 }
 
 std::vector<int> goal_vector(AlphabetKind kind, std::string_view word) {

@@ -26,6 +26,8 @@ struct WordTrajectory {
 
 // Throws InputError(where, ...) unless the word has 1..10 symbols, all in the alphabet.
 void validate_word(AlphabetKind kind, std::string_view word, std::string_view where);
+// The same check returning the problem, or an empty string for a valid word.
+std::string word_problem(AlphabetKind kind, std::string_view word);
 std::vector<int> goal_vector(AlphabetKind kind, std::string_view word);
 
 WordTrajectory build_word_trajectory(const GlyphSet& glyphs, std::string_view word);

@@ -9,8 +9,12 @@ WritingScenario parse_writing_scenario(const JsonView& node) {
   if (!node.is_object()) node.fail("expected an object like {\"word\": \"ab-c\", \"alphabet\": \"classic\"}");
   const JsonView word = node.at("word");
   scenario.word = word.string();
-  if (auto alphabet = node.find("alphabet")) scenario.alphabet = alphabet_from_name(alphabet->string(), alphabet->path());
-  validate_word(scenario.alphabet, scenario.word, word.path());
+  if (auto alphabet = node.find("alphabet")) {
+    const std::string name = alphabet->string();
+    if (auto problem = alphabet_name_problem(name); !problem.empty()) alphabet->fail(problem);
+    scenario.alphabet = alphabet_from_name(name, alphabet->path());
+  }
+  if (auto problem = word_problem(scenario.alphabet, scenario.word); !problem.empty()) word.fail(problem);
   if (auto drawers = node.find("drawers")) {
     if (!drawers->is_object()) drawers->fail("expected an object like {\"B\": 4}");
     if (scenario.alphabet == AlphabetKind::Classic)
