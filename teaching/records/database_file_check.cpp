@@ -7,6 +7,7 @@
 #include <string>
 
 #include <sqlite3.h>
+#include <unistd.h>
 
 #include "engine/core/error.hpp"
 #include "teaching/records/schema_migrations.hpp"
@@ -32,7 +33,8 @@ std::string hex32(std::uint32_t value) {
 void check_header(const std::filesystem::path& file, std::uintmax_t size) {
   const std::string where = file.string();
   if (size < kHeaderSize)
-    throw InputError(where, "not a SQLite database or truncated (only " + std::to_string(size) + " bytes)");
+    throw InputError(where, "not a SQLite database or truncated (only " + std::to_string(size) +
+                                " bytes); it was not changed");
   std::array<unsigned char, kHeaderSize> header{};
   std::ifstream in(file, std::ios::binary);
   if (!in.read(reinterpret_cast<char*>(header.data()), kHeaderSize)) throw InputError(where, "cannot be read");
@@ -55,9 +57,9 @@ void check_header(const std::filesystem::path& file, std::uintmax_t size) {
   }
 }
 
-// A read-only connection; falls back to `immutable=1` when the directory is read-only and SQLite cannot
-// create the WAL index (safe then: nobody can be writing a database whose directory is read-only to us).
+// A read-only connection; falls back to `immutable=1` when SQLite cannot create the WAL index.
 std::unique_ptr<SqliteDb> open_for_inspection(const std::filesystem::path& file) {
+  if (read_immutably(file)) return std::make_unique<SqliteDb>(file, SqliteDb::Mode::ReadOnly, "immutable=1");
   try {
     auto db = std::make_unique<SqliteDb>(file, SqliteDb::Mode::ReadOnly);
     db->query_int("PRAGMA schema_version");  // forces the first read
@@ -73,6 +75,14 @@ std::string first_table_name(SqliteDb& db) {
 }
 
 }  // namespace
+
+bool read_immutably(const std::filesystem::path& file) {
+  const auto dir = file.has_parent_path() ? file.parent_path() : std::filesystem::path(".");
+  if (::access(file.c_str(), W_OK) == 0 && ::access(dir.c_str(), W_OK) == 0) return false;
+  std::error_code ec;
+  const auto wal_size = std::filesystem::file_size(file.string() + "-wal", ec);
+  return ec || wal_size == 0;
+}
 
 DatabaseFileState check_database_file(const std::filesystem::path& file, int newest_version) {
   const std::string where = file.string();

@@ -12,6 +12,11 @@ struct DatabaseFileState {
   int schema_version = 0;  // user_version of an existing SkillCoach database
 };
 
+// True when we cannot write the file or its directory and no write-ahead log holds unmerged pages:
+// such a database is read through an `immutable=1` connection, which creates no -shm/-wal files (a -shm
+// created now would keep the file's read-only permissions and block writing after the user fixes them).
+bool read_immutably(const std::filesystem::path& file);
+
 // `newest_version` is the newest schema this build understands.
 DatabaseFileState check_database_file(const std::filesystem::path& file, int newest_version);
 

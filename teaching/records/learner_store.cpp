@@ -42,7 +42,7 @@ void require_json(const std::string& text, std::string_view what) {
 template <typename Fn>
 auto LearnerStore::read(Fn&& query) const {
   try {
-    return query(*db_);
+    return query(connection());
   } catch (const SqliteError& e) {
     throw InputError(path_.string(), "cannot be read (" + describe(e) + ")");
   }
@@ -52,9 +52,9 @@ template <typename Fn>
 auto LearnerStore::write_now(const std::string& what, Fn&& write) {
   if (options_.read_only) throw InputError(path_.string(), "cannot " + what + ": the database was opened read-only");
   try {
-    if (db_->is_read_only()) db_ = connect();
-    SqliteTransaction transaction(*db_);
-    auto result = write(*db_);
+    if (connection().is_read_only()) reconnect();
+    SqliteTransaction transaction(connection());
+    auto result = write(connection());
     transaction.commit();
     return result;
   } catch (const SqliteError& e) {
@@ -103,10 +103,23 @@ int LearnerStore::schema_version() const {
   return read([](SqliteDb& db) { return static_cast<int>(db.query_int("PRAGMA user_version")); });
 }
 
-bool LearnerStore::writable() const { return !options_.read_only && !db_->is_read_only(); }
+bool LearnerStore::writable() const { return !options_.read_only && !connection().is_read_only(); }
+
+SqliteDb& LearnerStore::connection() const {
+  if (!db_) db_ = connect();  // a previous reconnect failed; this throws sc::InputError if it fails again
+  return *db_;
+}
+
+void LearnerStore::reconnect() {
+  // Close first: connections of one process share SQLite's WAL index, so a new connection would inherit
+  // the old one's read-only mapping.
+  db_.reset();
+  db_ = connect();
+}
 
 std::unique_ptr<SqliteDb> LearnerStore::connect() const {
   const std::string where = path_.string();
+  if (std::filesystem::exists(path_) && read_immutably(path_)) return connect_immutable();
   try {
     auto db = std::make_unique<SqliteDb>(
         path_, options_.read_only ? SqliteDb::Mode::ReadOnly : SqliteDb::Mode::ReadWriteCreate);
@@ -132,15 +145,19 @@ std::unique_ptr<SqliteDb> LearnerStore::connect() const {
     if (options_.read_only || (code != SQLITE_READONLY && code != SQLITE_CANTOPEN && code != SQLITE_PERM))
       throw InputError(where, "cannot be opened (" + describe(e) + ")");
   }
-  // The directory is read-only, so SQLite cannot create the WAL index: read through an immutable
-  // connection (nobody can be writing here) and queue every write until the database is writable.
+  return connect_immutable();
+}
+
+// The file or its directory is read-only to us: read through an immutable connection, which creates no
+// files (see read_immutably), and queue every write until the database is writable again.
+std::unique_ptr<SqliteDb> LearnerStore::connect_immutable() const {
   try {
     auto db = std::make_unique<SqliteDb>(path_, SqliteDb::Mode::ReadOnly, "immutable=1");
     db->exec("PRAGMA foreign_keys = ON");
     require_current_schema(*db);
     return db;
   } catch (const SqliteError& e) {
-    throw InputError(where, "cannot be opened (" + describe(e) + ")");
+    throw InputError(path_.string(), "cannot be opened (" + describe(e) + ")");
   }
 }
 
@@ -262,14 +279,14 @@ bool LearnerStore::try_write_pending(std::string& problem) {
     return false;
   }
   try {
-    if (db_->is_read_only()) db_ = connect();  // the file or directory may have become writable
-    if (db_->is_read_only()) {
+    if (connection().is_read_only()) reconnect();  // the file or directory may have become writable
+    if (connection().is_read_only()) {
       problem = "the database file or its directory is read-only";
       return false;
     }
     while (!pending_.empty()) {
-      SqliteTransaction transaction(*db_);
-      apply_write(*db_, pending_.front());
+      SqliteTransaction transaction(connection());
+      apply_write(connection(), pending_.front());
       transaction.commit();
       pending_.pop_front();
     }
@@ -297,7 +314,7 @@ int LearnerStore::next_seq(std::int64_t session_id) {
   if (it == last_seq_.end()) {
     int last = 0;
     try {
-      last = query_last_seq(*db_, session_id);
+      last = query_last_seq(connection(), session_id);
     } catch (const SqliteError&) {  // unreadable now: the pending queue below still orders this session
     }
     for (const auto& write : pending_) {
@@ -313,7 +330,7 @@ void LearnerStore::require_session(std::int64_t session_id) const {
   if (last_seq_.count(session_id) != 0) return;
   bool known = true;
   try {
-    known = query_session(*db_, session_id).has_value();
+    known = query_session(connection(), session_id).has_value();
   } catch (const SqliteError&) {  // cannot check now; a write for an unknown session would stay pending
   }
   if (!known) throw InputError(path_.string(), "unknown session id " + std::to_string(session_id));

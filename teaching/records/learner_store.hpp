@@ -83,6 +83,9 @@ class LearnerStore {
 
  private:
   std::unique_ptr<SqliteDb> connect() const;
+  std::unique_ptr<SqliteDb> connect_immutable() const;
+  SqliteDb& connection() const;
+  void reconnect();
   void require_current_schema(SqliteDb& db) const;
   void load_spill_file();
   SaveResult submit(PendingWrite write);
@@ -97,7 +100,7 @@ class LearnerStore {
 
   std::filesystem::path path_;
   StoreOptions options_;
-  std::unique_ptr<SqliteDb> db_;
+  mutable std::unique_ptr<SqliteDb> db_;  // null only after a failed reconnect; connection() retries
   std::deque<PendingWrite> pending_;
   std::map<std::int64_t, int> last_seq_;  // per session: last seq handed out
   std::string open_message_;

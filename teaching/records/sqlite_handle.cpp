@@ -46,7 +46,9 @@ SqliteStatement& SqliteStatement::bind(int index, double value) {
 
 SqliteStatement& SqliteStatement::bind(int index, std::string_view text) {
   // SQLITE_TRANSIENT: SQLite copies the text, so callers may pass temporaries.
-  check_sqlite(db_, sqlite3_bind_text64(stmt_, index, text.data(), text.size(), SQLITE_TRANSIENT, SQLITE_UTF8),
+  // An empty string_view may have a null data(), which SQLite would bind as NULL instead of ''.
+  const char* data = text.data() != nullptr ? text.data() : "";
+  check_sqlite(db_, sqlite3_bind_text64(stmt_, index, data, text.size(), SQLITE_TRANSIENT, SQLITE_UTF8),
                "bind");
   return *this;
 }

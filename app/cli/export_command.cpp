@@ -1,0 +1,39 @@
+// skillcoach export: the whole learner database as one JSON document (trials embed their trajectory
+// files). Reads the database read-only; a missing, damaged, foreign or newer database exits with 2.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/cli/command_registry.hpp"
+#include "teaching/records/records_export.hpp"
+
+namespace sc::cli {
+namespace {
+
+struct ExportOptions {
+  std::string data_dir;
+  std::string out;
+};
+
+CommandRunner setup(CLI::App& sub) {
+  auto options = std::make_shared<ExportOptions>();
+  sub.add_option("--data-dir", options->data_dir,
+                 "Directory holding skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  sub.add_option("--out", options->out, "JSON file to write")->required();
+  return [options] {
+    const std::filesystem::path data_dir =
+        options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
+    const auto trials = records::export_database(data_dir, options->out);
+    std::printf("exported %zu trials from %s to %s\n", trials,
+                (data_dir / records::LearnerStore::kDatabaseFileName).string().c_str(), options->out.c_str());
+    return 0;
+  };
+}
+
+const CommandRegistration kReg{{"export", "Export every learner record (trials with their trajectories) as JSON",
+                                "skillcoach export --data-dir ~/.local/share/skillcoach --out records.json", setup}};
+
+}  // namespace
+}  // namespace sc::cli
