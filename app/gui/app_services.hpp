@@ -1,0 +1,38 @@
+#pragma once
+// State shared by all screens of one run: what the learner chose on the start screen, where records live,
+// and the seed every random choice derives from (fixed in screenshots so they are reproducible).
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "app/gui/gui_main.hpp"
+
+namespace sc {
+
+enum class TaskKind { parking, writing };
+
+enum class DeviceKind {
+  gamepad,         // an SDL game controller (see gamepad_instance_id)
+  mouse_joystick,  // the on-screen stick dragged with the mouse (parking)
+  keyboard,        // arrow keys (parking)
+  mouse_pen,       // mouse or trackpad as a pen (writing)
+};
+
+struct DeviceChoice {
+  DeviceKind kind = DeviceKind::mouse_joystick;
+  int gamepad_instance_id = -1;
+  std::string gamepad_name;
+};
+
+std::string_view to_string(TaskKind task);
+std::string describe(const DeviceChoice& device);
+
+struct AppServices {
+  GuiOptions options;
+  std::uint64_t seed = 20221128;  // deterministic by default; the window may pick another per session
+  bool headless = false;          // true for screenshots and the demo: no window, no real devices
+  TaskKind task = TaskKind::parking;
+  DeviceChoice device;
+};
+
+}  // namespace sc

@@ -1,0 +1,38 @@
+#include "app/gui/offscreen_screenshot.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "app/gui/screen_host.hpp"
+#include "engine/core/error.hpp"
+
+namespace sc {
+
+RgbaImage render_screen_offscreen(const ScreenshotRequest& request) {
+  if (!Navigator::is_available(request.screen))
+    throw InputError("--screen " + request.screen, "unknown screen (registered: " + registered_screen_names() + ")");
+  auto context = create_offscreen_context_from_env(request.width, request.height);
+  AppServices services;
+  services.headless = true;
+  ScreenHost host(*context, services, request.screen);
+  const FrameInput input;  // no devices, mouse outside: nothing hovered
+  for (int i = 0; i < std::max(2, request.frames); ++i) {
+    host.imgui().make_current();
+    host.frame(input, ScreenHost::kSimulationStep);
+    context->present();
+  }
+  return context->read_rgba();
+}
+
+std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
+  const auto x = text.find('x');
+  int w = 0, h = 0;
+  const bool ok = x != std::string::npos &&
+                  std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
+                  std::from_chars(text.data() + x + 1, text.data() + text.size(), h).ptr == text.data() + text.size();
+  if (!ok || w < 64 || h < 64 || w > 8192 || h > 8192)
+    throw InputError(option + " " + text, "expected WIDTHxHEIGHT with each side in 64..8192, e.g. 1280x720");
+  return {w, h};
+}
+
+}  // namespace sc

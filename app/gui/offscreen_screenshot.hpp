@@ -1,0 +1,24 @@
+#pragma once
+// Renders a registered screen without a window, deterministically: offscreen GL context (SKILLCOACH_GL, else
+// OSMesa then EGL), fixed seed, fixed 1/60 s frames, no devices, mouse outside. ImGui's first frame differs
+// from later ones (window sizes settle), so at least 2 frames are rendered before the capture.
+#include <filesystem>
+#include <string>
+
+#include "engine/render/rgba_image.hpp"
+
+namespace sc {
+
+struct ScreenshotRequest {
+  std::string screen = "start";
+  int width = 1280;
+  int height = 720;
+  int frames = 3;  // clamped to >= 2
+};
+
+RgbaImage render_screen_offscreen(const ScreenshotRequest& request);
+
+// "1280x720" -> {1280, 720}; throws InputError naming `option` for anything else (or sizes outside 64..8192).
+std::pair<int, int> parse_size(const std::string& text, const std::string& option);
+
+}  // namespace sc

@@ -1,0 +1,104 @@
+// EGL surfaceless offscreen context (EGL_PLATFORM_SURFACELESS_MESA) drawing into a framebuffer object.
+// This is the offscreen path that keeps working on Mesa >= 25.1, which dropped OSMesa.
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "engine/render/offscreen_contexts.hpp"
+#include "engine/render/offscreen_framebuffer.hpp"
+
+namespace sc {
+namespace {
+
+constexpr const char* kWhere = "EGL surfaceless";
+
+std::string egl_error_text() {
+  char code[16];
+  std::snprintf(code, sizeof code, "0x%04X", static_cast<unsigned>(eglGetError()));
+  return std::string("EGL error ") + code;
+}
+
+GlProc egl_proc(const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); }
+
+class EglContext final : public GlContext {
+ public:
+  EglContext(int width, int height) {
+    auto get_platform_display =
+        reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (get_platform_display == nullptr) throw InputError(kWhere, "eglGetPlatformDisplayEXT is not available");
+    display_ = get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (display_ == EGL_NO_DISPLAY || eglInitialize(display_, &major, &minor) == EGL_FALSE)
+      throw InputError(kWhere, "no surfaceless EGL display (is libegl-mesa0 installed?): " + egl_error_text());
+    const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
+    if (extensions == nullptr || std::strstr(extensions, "EGL_KHR_surfaceless_context") == nullptr)
+      throw InputError(kWhere, "the EGL display lacks EGL_KHR_surfaceless_context");
+    if (eglBindAPI(EGL_OPENGL_API) == EGL_FALSE) throw InputError(kWhere, "desktop OpenGL is not supported");
+    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint config_count = 0;
+    if (eglChooseConfig(display_, config_attribs, &config, 1, &config_count) == EGL_FALSE || config_count < 1)
+      throw InputError(kWhere, "no EGL config for desktop OpenGL: " + egl_error_text());
+    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                      EGL_NONE};
+    context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
+    if (context_ == EGL_NO_CONTEXT) throw InputError(kWhere, "cannot create an OpenGL 3.3 core context: " + egl_error_text());
+    bind();
+    load_functions(&egl_proc, kWhere);
+    set_current_gl_functions(&gl());
+    framebuffer_.emplace(gl(), width, height);
+  }
+
+  ~EglContext() override {
+    make_current();
+    framebuffer_.reset();
+    if (current_gl_functions() == &gl()) set_current_gl_functions(nullptr);
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    eglDestroyContext(display_, context_);
+    // No eglTerminate: the surfaceless display is a per-process singleton that other contexts may share.
+  }
+
+  std::string_view backend_name() const override { return "egl"; }
+  void make_current() override {
+    bind();
+    if (framebuffer_) set_current_gl_functions(&gl());
+  }
+  int width() const override { return framebuffer_->width(); }
+  int height() const override { return framebuffer_->height(); }
+  GLuint target_framebuffer() const override { return framebuffer_->draw_framebuffer(); }
+  void present() override {
+    framebuffer_->resolve();
+    gl().Finish();
+  }
+  RgbaImage read_rgba() override { return framebuffer_->read(); }
+  void resize(int width, int height) override {
+    if (width == this->width() && height == this->height()) return;
+    make_current();
+    framebuffer_.reset();
+    framebuffer_.emplace(gl(), width, height);
+  }
+
+ private:
+  void bind() {
+    if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_FALSE)
+      throw InputError(kWhere, "eglMakeCurrent failed: " + egl_error_text());
+  }
+
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  std::optional<OffscreenFramebuffer> framebuffer_;
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> create_egl_context(int width, int height) {
+  return std::make_unique<EglContext>(width, height);
+}
+
+}  // namespace sc

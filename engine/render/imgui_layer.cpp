@@ -1,0 +1,137 @@
+#include "engine/render/imgui_layer.hpp"
+
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "engine/core/asset_paths.hpp"
+#include "engine/core/error.hpp"
+
+namespace sc {
+
+ImGuiLayer::ImGuiLayer(GlContext& context) : context_(context) {
+  // Resolve the fonts before touching ImGui: a missing asset must be a clean error, not an ImGui assert.
+  (void)asset_path("fonts/DejaVuSans.ttf");
+  (void)asset_path("fonts/DejaVuSans-Bold.ttf");
+  IMGUI_CHECKVERSION();
+  imgui_ = ImGui::CreateContext();
+  ImGui::SetCurrentContext(imgui_);
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini in the working directory; layouts are code, screenshots reproducible
+  io.LogFilename = nullptr;
+  io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavEnableGamepad;
+  context_.make_current();
+  if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+    ImGui::DestroyContext(imgui_);
+    throw InputError(std::string(context.backend_name()) + " OpenGL context", "ImGui OpenGL3 backend failed to start");
+  }
+  rebuild_fonts_and_style(scale_for_height(context_.height()));
+}
+
+ImGuiLayer::~ImGuiLayer() {
+  make_current();
+  context_.make_current();
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui::DestroyContext(imgui_);
+}
+
+void ImGuiLayer::make_current() const { ImGui::SetCurrentContext(imgui_); }
+
+float ImGuiLayer::scale_for_height(int framebuffer_height) {
+  const float raw = static_cast<float>(framebuffer_height) / 720.0f;
+  return std::clamp(std::round(raw * 8.0f) / 8.0f, 0.75f, 4.0f);
+}
+
+void ImGuiLayer::rebuild_fonts_and_style(float scale) {
+  scale_ = scale;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFontConfig config;
+  config.OversampleH = 2;
+  config.OversampleV = 1;
+  const std::string regular = asset_path("fonts/DejaVuSans.ttf").string();
+  const std::string bold = asset_path("fonts/DejaVuSans-Bold.ttf").string();
+  fonts_.body = io.Fonts->AddFontFromFileTTF(regular.c_str(), std::round(18.0f * scale), &config);
+  fonts_.bold = io.Fonts->AddFontFromFileTTF(bold.c_str(), std::round(18.0f * scale), &config);
+  fonts_.heading = io.Fonts->AddFontFromFileTTF(bold.c_str(), std::round(30.0f * scale), &config);
+  fonts_.title = io.Fonts->AddFontFromFileTTF(bold.c_str(), std::round(48.0f * scale), &config);
+  if (fonts_.body == nullptr || fonts_.bold == nullptr || fonts_.heading == nullptr || fonts_.title == nullptr)
+    throw InputError(regular, "font could not be loaded");
+  io.FontDefault = fonts_.body;
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  if (!ImGui_ImplOpenGL3_CreateFontsTexture()) throw InputError("ImGui", "font texture upload failed");
+  ImGui::GetStyle() = ImGuiStyle();
+  apply_skillcoach_style(ImGui::GetStyle(), scale);
+}
+
+void ImGuiLayer::begin_frame(double dt_seconds) {
+  make_current();
+  context_.make_current();
+  const int w = context_.width(), h = context_.height();
+  if (const float wanted = scale_for_height(h); wanted != scale_) rebuild_fonts_and_style(wanted);
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
+  io.DisplayFramebufferScale = ImVec2(1, 1);
+  io.DeltaTime = static_cast<float>(std::clamp(dt_seconds, 1e-4, 0.25));
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui::NewFrame();
+}
+
+void ImGuiLayer::end_frame() {
+  make_current();
+  ImGui::Render();
+  context_.gl().BindFramebuffer(GL_FRAMEBUFFER, context_.target_framebuffer());
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void apply_skillcoach_style(ImGuiStyle& style, float scale) {
+  style.WindowPadding = ImVec2(20, 18);
+  style.FramePadding = ImVec2(14, 8);
+  style.ItemSpacing = ImVec2(12, 10);
+  style.ItemInnerSpacing = ImVec2(8, 6);
+  style.WindowRounding = 10;
+  style.ChildRounding = 8;
+  style.FrameRounding = 6;
+  style.PopupRounding = 6;
+  style.GrabRounding = 6;
+  style.TabRounding = 6;
+  style.ScrollbarRounding = 8;
+  style.WindowBorderSize = 0;
+  style.FrameBorderSize = 0;
+  style.ScrollbarSize = 14;
+  style.WindowTitleAlign = ImVec2(0.5f, 0.5f);
+  style.ScaleAllSizes(scale);
+
+  auto rgb = [](unsigned hex, float a = 1.0f) {
+    return ImVec4(static_cast<float>((hex >> 16) & 0xff) / 255.0f, static_cast<float>((hex >> 8) & 0xff) / 255.0f,
+                  static_cast<float>(hex & 0xff) / 255.0f, a);
+  };
+  ImVec4* c = style.Colors;
+  c[ImGuiCol_Text] = rgb(0xe8ecf2);
+  c[ImGuiCol_TextDisabled] = rgb(0x8a93a3);
+  c[ImGuiCol_WindowBg] = rgb(0x1b2029);
+  c[ImGuiCol_ChildBg] = rgb(0x222835);
+  c[ImGuiCol_PopupBg] = rgb(0x222835);
+  c[ImGuiCol_Border] = rgb(0x39414f);
+  c[ImGuiCol_FrameBg] = rgb(0x2a3140);
+  c[ImGuiCol_FrameBgHovered] = rgb(0x343d4f);
+  c[ImGuiCol_FrameBgActive] = rgb(0x3d4860);
+  c[ImGuiCol_TitleBg] = rgb(0x1b2029);
+  c[ImGuiCol_TitleBgActive] = rgb(0x222835);
+  c[ImGuiCol_Button] = rgb(0x2f3849);
+  c[ImGuiCol_ButtonHovered] = rgb(0x3b4760);
+  c[ImGuiCol_ButtonActive] = rgb(0x2f6fd8);
+  c[ImGuiCol_Header] = rgb(0x2f6fd8, 0.55f);
+  c[ImGuiCol_HeaderHovered] = rgb(0x2f6fd8, 0.75f);
+  c[ImGuiCol_HeaderActive] = rgb(0x2f6fd8);
+  c[ImGuiCol_CheckMark] = rgb(0x5b9bff);
+  c[ImGuiCol_SliderGrab] = rgb(0x5b9bff);
+  c[ImGuiCol_SliderGrabActive] = rgb(0x8ab8ff);
+  c[ImGuiCol_Separator] = rgb(0x39414f);
+  c[ImGuiCol_NavHighlight] = rgb(0x8ab8ff);
+  c[ImGuiCol_PlotHistogram] = rgb(0x5b9bff);
+}
+
+}  // namespace sc

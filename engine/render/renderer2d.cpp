@@ -1,0 +1,228 @@
+#include "engine/render/renderer2d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+constexpr int kMaxGhostsPerStencilClear = 255;  // 8-bit stencil
+
+Camera2D pixel_camera(int width, int height) {
+  const float w = static_cast<float>(std::max(1, width)), h = static_cast<float>(std::max(1, height));
+  return Camera2D({0, 0, w, h}, {0, 0, w, h}, WorldYAxis::down);
+}
+
+bool same_clip(const PixelViewport& a, const PixelViewport& b) {
+  return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
+}
+
+}  // namespace
+
+Renderer2D::Renderer2D(GlContext& context)
+    : context_(context),
+      gl_(context.gl()),
+      program_(context.gl(), "scene.vert", "scene.frag"),
+      camera_(pixel_camera(context.width(), context.height())) {
+  framebuffer_size_uniform_ = program_.uniform("u_framebuffer_size");
+  gl_.GenVertexArrays(1, &vertex_array_);
+  gl_.GenBuffers(1, &vertex_buffer_);
+  gl_.BindVertexArray(vertex_array_);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  gl_.EnableVertexAttribArray(0);
+  gl_.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, x)));
+  gl_.EnableVertexAttribArray(1);
+  gl_.VertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(Vertex),
+                          reinterpret_cast<void*>(offsetof(Vertex, abgr)));
+  gl_.BindVertexArray(0);
+  throw_on_gl_error(gl_, "creating the scene renderer");
+}
+
+Renderer2D::~Renderer2D() {
+  gl_.DeleteBuffers(1, &vertex_buffer_);
+  gl_.DeleteVertexArrays(1, &vertex_array_);
+}
+
+void Renderer2D::begin_frame(Color clear) {
+  const int w = context_.width(), h = context_.height();
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, context_.target_framebuffer());
+  gl_.Viewport(0, 0, w, h);
+  gl_.Disable(GL_SCISSOR_TEST);
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.Disable(GL_CULL_FACE);
+  gl_.Disable(GL_STENCIL_TEST);
+  gl_.Disable(GL_PRIMITIVE_RESTART);
+  gl_.Disable(GL_FRAMEBUFFER_SRGB);
+  gl_.Disable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  gl_.Enable(GL_MULTISAMPLE);
+  gl_.Enable(GL_BLEND);
+  gl_.BlendEquation(GL_FUNC_ADD);
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  gl_.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl_.DepthMask(GL_TRUE);
+  gl_.StencilMask(0xFF);
+  gl_.StencilFunc(GL_ALWAYS, 0, 0xFF);
+  gl_.StencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  gl_.ActiveTexture(GL_TEXTURE0);
+  gl_.BindTexture(GL_TEXTURE_2D, 0);
+  gl_.UseProgram(0);
+  gl_.BindVertexArray(0);
+  gl_.ClearColor(clear.r, clear.g, clear.b, clear.a);
+  gl_.ClearStencil(0);
+  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  vertices_.clear();
+  batches_.clear();
+  next_ghost_ref_ = 1;
+  camera_ = pixel_camera(w, h);
+  stats_ = {};
+  in_frame_ = true;
+}
+
+void Renderer2D::end_frame() {
+  if (!in_frame_) throw InputError("Renderer2D", "end_frame() without begin_frame()");
+  flush();
+  gl_.Disable(GL_STENCIL_TEST);
+  gl_.Disable(GL_SCISSOR_TEST);
+  gl_.BindVertexArray(0);
+  gl_.UseProgram(0);
+  in_frame_ = false;
+}
+
+void Renderer2D::set_camera(const Camera2D& camera) { camera_ = camera; }
+
+float Renderer2D::to_world(Stroke stroke) const {
+  return stroke.units == Stroke::Units::world ? stroke.width : stroke.width / camera_.pixels_per_unit();
+}
+
+float Renderer2D::chord_error_world() const { return 0.25f / camera_.pixels_per_unit(); }
+
+void Renderer2D::push(const Triangles& world_triangles, Color color, int stencil_ref) {
+  if (!in_frame_) throw InputError("Renderer2D", "drawing outside begin_frame()/end_frame()");
+  if (world_triangles.empty()) return;
+  const std::uint32_t abgr = color.packed_abgr();
+  const std::size_t first = vertices_.size();
+  for (const Vec2f& p : world_triangles) {
+    const Vec2f px = camera_.world_to_pixel(p);
+    vertices_.push_back({px.x, px.y, abgr});
+  }
+  const PixelViewport& clip = camera_.viewport();
+  if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 && same_clip(batches_.back().clip, clip)) {
+    batches_.back().count += world_triangles.size();
+  } else {
+    batches_.push_back({first, world_triangles.size(), clip, stencil_ref});
+  }
+}
+
+void Renderer2D::fill_rect(const RotatedRect& rect, Color color) {
+  scratch_.clear();
+  append_convex_polygon(scratch_, rect_corners(rect));
+  push(scratch_, color);
+}
+
+void Renderer2D::outline_rect(const RotatedRect& rect, Stroke stroke, Color color) {
+  scratch_.clear();
+  PathStyle style;
+  style.closed = true;
+  append_polyline(scratch_, rect_corners(rect), to_world(stroke), style, chord_error_world());
+  push(scratch_, color);
+}
+
+void Renderer2D::fill_polygon(std::span<const Vec2f> convex_corners, Color color) {
+  scratch_.clear();
+  append_convex_polygon(scratch_, convex_corners);
+  push(scratch_, color);
+}
+
+void Renderer2D::polyline(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style) {
+  scratch_.clear();
+  append_polyline(scratch_, points, to_world(stroke), style, chord_error_world());
+  push(scratch_, color);
+}
+
+void Renderer2D::dashed_polyline(std::span<const Vec2f> points, Stroke stroke, DashPattern pattern, Color color,
+                                 const PathStyle& style) {
+  const float scale = stroke.units == Stroke::Units::world ? 1.0f : 1.0f / camera_.pixels_per_unit();
+  PathStyle dash_style = style;
+  dash_style.closed = false;
+  scratch_.clear();
+  for (const auto& dash : dash_polyline(points, pattern.dash * scale, pattern.gap * scale))
+    append_polyline(scratch_, dash, to_world(stroke), dash_style, chord_error_world());
+  push(scratch_, color);
+}
+
+void Renderer2D::fill_circle(Vec2f center, float radius, Color color) {
+  scratch_.clear();
+  append_circle(scratch_, center, radius, chord_error_world());
+  push(scratch_, color);
+}
+
+void Renderer2D::outline_circle(Vec2f center, float radius, Stroke stroke, Color color) {
+  scratch_.clear();
+  append_ring(scratch_, center, radius, to_world(stroke), chord_error_world());
+  push(scratch_, color);
+}
+
+void Renderer2D::ghost_ribbon(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style) {
+  scratch_.clear();
+  append_polyline(scratch_, points, to_world(stroke), style, chord_error_world());
+  if (scratch_.empty()) return;
+  push(scratch_, color, next_ghost_ref_);
+  next_ghost_ref_ = next_ghost_ref_ % kMaxGhostsPerStencilClear + 1;
+}
+
+void Renderer2D::arrow(Vec2f from, Vec2f to, Stroke stroke, ArrowHead head, Color color) {
+  const float scale = stroke.units == Stroke::Units::world ? 1.0f : 1.0f / camera_.pixels_per_unit();
+  scratch_.clear();
+  append_arrow(scratch_, from, to, to_world(stroke), head.length * scale, head.width * scale);
+  push(scratch_, color);
+}
+
+void Renderer2D::flush() {
+  stats_.vertices = static_cast<int>(vertices_.size());
+  if (vertices_.empty()) return;
+  const int fb_w = context_.width(), fb_h = context_.height();
+  gl_.UseProgram(program_.id());
+  gl_.Uniform2f(framebuffer_size_uniform_, static_cast<float>(fb_w), static_cast<float>(fb_h));
+  gl_.BindVertexArray(vertex_array_);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+  const std::size_t bytes = vertices_.size() * sizeof(Vertex);
+  if (bytes > buffer_capacity_) {
+    buffer_capacity_ = std::max(bytes, buffer_capacity_ * 2);
+    gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(buffer_capacity_), nullptr, GL_STREAM_DRAW);
+  }
+  gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), vertices_.data());
+  gl_.Enable(GL_SCISSOR_TEST);
+  int previous_ref = 0;
+  for (const Batch& batch : batches_) {
+    // Scissor takes a bottom-left origin; our pixels have a top-left origin.
+    const int x0 = static_cast<int>(std::floor(batch.clip.x));
+    const int y1 = static_cast<int>(std::ceil(batch.clip.y + batch.clip.height));
+    const int x1 = static_cast<int>(std::ceil(batch.clip.x + batch.clip.width));
+    const int y0 = static_cast<int>(std::floor(batch.clip.y));
+    gl_.Scissor(x0, fb_h - y1, std::max(0, x1 - x0), std::max(0, y1 - y0));
+    if (batch.stencil_ref > 0) {
+      if (batch.stencil_ref < previous_ref) {  // wrapped after 255 ghosts: start the stencil afresh
+        gl_.Disable(GL_SCISSOR_TEST);
+        gl_.Clear(GL_STENCIL_BUFFER_BIT);
+        gl_.Enable(GL_SCISSOR_TEST);
+      }
+      gl_.Enable(GL_STENCIL_TEST);
+      gl_.StencilFunc(GL_NOTEQUAL, batch.stencil_ref, 0xFF);
+      gl_.StencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      previous_ref = batch.stencil_ref;
+    } else {
+      gl_.Disable(GL_STENCIL_TEST);
+    }
+    gl_.DrawArrays(GL_TRIANGLES, static_cast<GLint>(batch.first), static_cast<GLsizei>(batch.count));
+    ++stats_.draw_calls;
+  }
+  vertices_.clear();
+  batches_.clear();
+}
+
+}  // namespace sc

@@ -1,0 +1,107 @@
+#pragma once
+// OpenGL 3.3 core renderer of 2D scenes in world units. Primitives are tessellated on the CPU with the current
+// camera and appended to one vertex batch, drawn in order (painter's algorithm) with as few draw calls as the
+// state allows: one per run of opaque/translucent primitives sharing a clip rectangle, plus one per ghost
+// ribbon (each ghost uses its own stencil value so overlapping parts of one ribbon are blended only once).
+//
+//   Renderer2D renderer(context);             // loads shaders/scene.{vert,frag}
+//   renderer.begin_frame(Color::hex(0x20242c));
+//   renderer.set_camera(Camera2D({0, 0, 20, 12}, {0, 0, w, h}, WorldYAxis::down));
+//   renderer.fill_rect({{5, 5}, {2.4f, 1.0f}, 0.3f}, Color::hex(0x3d7be0));
+//   renderer.end_frame();                     // flushes; ImGui may draw on top afterwards
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/render/camera2d.hpp"
+#include "engine/render/draw_types.hpp"
+#include "engine/render/gl_context.hpp"
+#include "engine/render/shader_program.hpp"
+#include "engine/render/stroke_geometry.hpp"
+
+namespace sc {
+
+struct DashPattern {
+  float dash = 1;  // lengths in the stroke's units
+  float gap = 1;
+};
+
+struct ArrowHead {
+  float length = 12;  // in the stroke's units
+  float width = 10;
+};
+
+struct RenderStats {
+  int draw_calls = 0;
+  int vertices = 0;
+};
+
+class Renderer2D {
+ public:
+  explicit Renderer2D(GlContext& context);
+  ~Renderer2D();
+  Renderer2D(const Renderer2D&) = delete;
+  Renderer2D& operator=(const Renderer2D&) = delete;
+
+  // Resets every piece of GL state we depend on (so a frame never depends on what came before), binds the
+  // context's framebuffer, clears colour and stencil, and sets a camera showing the whole framebuffer in pixels.
+  void begin_frame(Color clear);
+  // Draws everything batched since begin_frame. GL state is left for ImGui to draw on top.
+  void end_frame();
+
+  // Primitives after this use `camera`, clipped to its viewport.
+  void set_camera(const Camera2D& camera);
+  const Camera2D& camera() const { return camera_; }
+
+  void fill_rect(const RotatedRect& rect, Color color);
+  void outline_rect(const RotatedRect& rect, Stroke stroke, Color color);
+  void fill_polygon(std::span<const Vec2f> convex_corners, Color color);
+  void polyline(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style = {});
+  void dashed_polyline(std::span<const Vec2f> points, Stroke stroke, DashPattern pattern, Color color,
+                       const PathStyle& style = {});
+  void fill_circle(Vec2f center, float radius, Color color);
+  void outline_circle(Vec2f center, float radius, Stroke stroke, Color color);
+  // A translucent path (e.g. an expert's ghost trajectory): where the ribbon overlaps itself it is still
+  // blended only once, so its colour stays even. Use a colour with alpha < 1.
+  void ghost_ribbon(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style = {});
+  void arrow(Vec2f from, Vec2f to, Stroke stroke, ArrowHead head, Color color);
+
+  // Counts of the last end_frame().
+  RenderStats last_frame_stats() const { return stats_; }
+
+ private:
+  struct Vertex {
+    float x, y;
+    std::uint32_t abgr;
+  };
+  struct Batch {
+    std::size_t first = 0;
+    std::size_t count = 0;
+    PixelViewport clip;
+    int stencil_ref = 0;  // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
+  };
+
+  float to_world(Stroke stroke) const;
+  float chord_error_world() const;  // a quarter pixel in world units
+  void push(const Triangles& world_triangles, Color color, int stencil_ref = 0);
+  void flush();
+
+  GlContext& context_;
+  const GlFunctions& gl_;
+  ShaderProgram program_;
+  GLint framebuffer_size_uniform_ = -1;
+  GLuint vertex_array_ = 0;
+  GLuint vertex_buffer_ = 0;
+  std::size_t buffer_capacity_ = 0;
+  Camera2D camera_;
+  std::vector<Vertex> vertices_;
+  std::vector<Batch> batches_;
+  Triangles scratch_;
+  int next_ghost_ref_ = 1;
+  bool in_frame_ = false;
+  RenderStats stats_;
+};
+
+}  // namespace sc
