@@ -1,6 +1,7 @@
-// Learner database: latency of keeping one finished trial (a ~30 KB parking trajectory file), i.e. what the trainer waits for between two trials. The store commits
-// each trial in its own transaction with synchronous=FULL (an fsync of the WAL per trial); the second
-// benchmark runs the same write with synchronous=NORMAL to show what the durability costs.
+// Learner database: latency of keeping one finished trial (a ~30 KB parking trajectory file), i.e. what
+// the trainer waits for between two trials. The store commits each trial in its own transaction with
+// synchronous=FULL (an fsync of the WAL per trial); the second benchmark runs the same write with
+// synchronous=NORMAL to show what the durability costs.
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
