@@ -1,0 +1,56 @@
+#pragma once
+// TaskKit: everything the teaching flow needs to know about one task (parking or writing), so that the
+// training session, the diagnose command, the synthetic students and the app screens stay task-agnostic.
+// Implementations: teaching/tasks/parking_kit.hpp and teaching/tasks/writing_kit.hpp.
+//
+// Trials travel as trajectory-file documents (docs/trajectory-format.md): {"task", "scenario", ...}.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/core/json_file.hpp"
+#include "teaching/curricula/curriculum.hpp"
+#include "teaching/drills/drill_plan.hpp"
+#include "teaching/skills/skill_extractor.hpp"
+
+namespace sc {
+
+// One expert demonstration of the pool that pre-tests, diagnoses and drills are built from.
+struct ExpertDemo {
+  Json scenario;          // the task's scenario object
+  Json trial;             // the expert's whole trial document (source "expert")
+  StepSequence steps;     // what the SkillExtractor reads
+  Segmentation skills;    // the extractor's segmentation of `steps`
+  Segmentation time_slices;  // the time heuristic's segmentation (the paper's baseline condition)
+  double reward = 0.0;    // the expert's episode score (<= 0)
+};
+
+class TaskKit {
+ public:
+  virtual ~TaskKit() = default;
+
+  virtual std::string task() const = 0;  // "parking" or "writing"
+  virtual const SkillExtractor& extractor() const = 0;
+  // Why the kit uses a fallback extractor (e.g. "assets/models/parking.pt: truncated file; using the time
+  // heuristic"), empty when the trained model loaded.
+  virtual std::string extractor_notice() const = 0;
+  virtual const std::vector<ExpertDemo>& expert_pool() const = 0;
+  virtual const DrillProjector& projector() const = 0;
+  virtual CurriculumConfig curriculum_config() const = 0;
+
+  // The learner's trial as steps for the extractor, and its episode score: <= 0, 0 best (Alg. 2's r).
+  virtual StepSequence steps_of(const Json& trial) const = 0;
+  virtual double reward_of(const Json& trial) const = 0;
+  // The expert's trial for a scenario (re-planned or looked up), for overlays and the "after" picture.
+  virtual Json expert_trial(const Json& scenario) const = 0;
+
+  // Fresh scenarios for evaluation, none equal to any in `exclude` (the pre-test's), deterministic in seed.
+  virtual std::vector<Json> fresh_scenarios(int count, std::uint64_t seed, const std::vector<Json>& exclude) const = 0;
+  // Plain words for a skill, e.g. "reversing while turning right" or "the loop of 'b'".
+  virtual std::string describe_skill(int skill) const = 0;
+  // The time a learner gets for a trial of `steps` expert control steps, in seconds.
+  virtual double time_limit_seconds(int expert_steps) const = 0;
+};
+
+}  // namespace sc
