@@ -1,0 +1,60 @@
+#pragma once
+// Hyperparameters of a CompILE model and of its training run (no torch here).
+// Defaults follow the paper's configs (reference-facts §3.1); see parking_defaults()/writing_defaults().
+#include <cstdint>
+#include <string>
+
+#include "engine/core/json_file.hpp"
+
+namespace sc {
+
+// What the decoder reconstructs (reference `--mode`):
+//   action            actions only;
+//   state+action      actions and states (weighted by beta_s);
+//   statediff+action  actions and state differences s_{t+1}-s_t (weighted by beta_s); the encoder still
+//                     sees raw states, as in the reference.
+enum class CompileMode { Action, StateAction, StateDiffAction };
+
+std::string to_string(CompileMode mode);
+// Throws InputError("<where>", "unknown CompILE mode ...") for anything else.
+CompileMode parse_compile_mode(const std::string& text, const std::string& where);
+
+struct CompileConfig {
+  std::string task = "synthetic";  // "parking", "writing", ...: checked when a model is loaded
+  CompileMode mode = CompileMode::Action;
+  int state_dim = 0;               // taken from the data when training
+  int action_dim = 2;
+  int latent_size = 16;            // M: number of discrete skills (concrete latent)
+  int num_segments = 4;            // K
+  int hidden = 64;                 // H
+  double prior_rate = 10.0;        // Poisson rate (segment length in model steps)
+  double beta_b = 0.1;
+  double beta_z = 0.1;
+  double beta_s = 0.0;
+  double learning_rate = 1e-3;     // Adam
+  int batch_size = 100;
+  int iterations = 2000;           // passes over the training split (the reference's "iterations")
+  int eval_interval = 5;           // iterations between validation checks
+  int patience = 50;               // stop after this many validation checks without improvement
+  std::uint64_t seed = 0;
+  // Arc-length resampling before the model (0 = off). Actions are read as displacements; each model step
+  // covers `resample_step` units of path length and its action is the mean unit direction over it.
+  double resample_step = 0.0;
+
+  // Paper: latent 16, K 4, Poisson 10, beta_s 1, statediff+action, lr 1e-3, batch 100 (12-D states).
+  static CompileConfig parking_defaults();
+  // Paper: latent 24, K 8, action, lr 5e-3, batch 50; we resample (see compile_config.cpp).
+  static CompileConfig writing_defaults();
+  // Task defaults by name ("parking" or "writing"); throws InputError otherwise.
+  static CompileConfig defaults_for(const std::string& task);
+
+  bool uses_states() const { return mode != CompileMode::Action; }
+  // Throws InputError naming `where` when a value is out of range.
+  void validate(const std::string& where) const;
+};
+
+Json to_json(const CompileConfig& config);
+// Reads the fields written by to_json; errors name `view`'s file and JSON path.
+CompileConfig compile_config_from_json(const JsonView& view);
+
+}  // namespace sc

@@ -1,0 +1,58 @@
+#pragma once
+// Trains a CompILE model on task-agnostic StepSequences (no torch types here).
+//
+// One iteration is one pass over the training split in batches of config.batch_size (shuffled with the
+// seed). Every config.eval_interval iterations the eval-mode reconstruction NLL on the VALID split is
+// measured; training stops after config.patience checks without improvement and the BEST weights are
+// kept. (The reference measured on its eval split and saved every 5 epochs rather than the best, so its
+// shipped models were arbitrary snapshots: reference-facts §3.6, §6.5, §6.10.)
+// Deterministic: the same config (seed) and data on the same machine give byte-identical model files.
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "teaching/skills/compile_model.hpp"
+
+namespace sc {
+
+struct TrainingProgress {
+  int iteration = 0;      // 1-based
+  int iterations = 0;     // configured maximum
+  double loss = 0.0;      // training loss terms, mean over the iteration's trajectories
+  double nll_action = 0.0;
+  double nll_state = 0.0;
+  double kl_z = 0.0;
+  double kl_b = 0.0;
+  double valid_nll = std::numeric_limits<double>::quiet_NaN();  // NaN when not evaluated this iteration
+  double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
+  double elapsed_seconds = 0.0;
+  bool improved = false;
+};
+
+struct TrainingSummary {
+  int iterations_run = 0;
+  int best_iteration = 0;  // iteration whose weights were kept (0 = untrained)
+  double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
+  double final_loss = std::numeric_limits<double>::quiet_NaN();
+  double seconds = 0.0;
+  bool stopped_early = false;
+  Json to_json() const;
+};
+
+class CompileTrainer {
+ public:
+  using ProgressCallback = std::function<void(const TrainingProgress&)>;
+  explicit CompileTrainer(CompileConfig config);
+
+  // `train` must not be empty; `valid` may be (then the last weights are kept). Dimensions must match the
+  // config (state_dim is only checked in state modes). Throws InputError for bad data or config.
+  CompileModel train(const std::vector<StepSequence>& train, const std::vector<StepSequence>& valid,
+                     const ProgressCallback& progress = {});
+  const TrainingSummary& summary() const { return summary_; }
+
+ private:
+  CompileConfig config_;
+  TrainingSummary summary_;
+};
+
+}  // namespace sc

@@ -1,0 +1,137 @@
+// CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept.
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "engine/core/error.hpp"
+#include "engine/core/rng.hpp"
+#include "teaching/skills/compile_torch.hpp"
+#include "teaching/skills/compile_trainer.hpp"
+
+namespace sc {
+
+using compile_detail::Batch;
+using compile_detail::CompileNetwork;
+
+Json TrainingSummary::to_json() const {
+  auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
+  return Json{{"iterations_run", iterations_run}, {"best_iteration", best_iteration},
+              {"best_valid_nll", num(best_valid_nll)}, {"final_loss", num(final_loss)},
+              {"seconds", seconds}, {"stopped_early", stopped_early}};
+}
+
+CompileTrainer::CompileTrainer(CompileConfig config) : config_(std::move(config)) {}
+
+namespace {
+
+std::vector<Batch> fixed_batches(const std::vector<ModelSteps>& data, const CompileConfig& config) {
+  std::vector<Batch> out;
+  const auto bs = static_cast<std::size_t>(config.batch_size);
+  for (std::size_t first = 0; first < data.size(); first += bs) {
+    std::vector<const StepSequence*> chunk;
+    for (std::size_t i = first; i < std::min(data.size(), first + bs); ++i)
+      if (data[i].steps.length() > 0) chunk.push_back(&data[i].steps);
+    if (!chunk.empty()) out.push_back(compile_detail::make_batch(chunk, config));
+  }
+  return out;
+}
+
+// Eval-mode (hard) reconstruction NLL per trajectory: the early-stopping criterion.
+double validation_nll(const CompileNetwork& net, const std::vector<Batch>& batches) {
+  torch::NoGradGuard no_grad;
+  double sum = 0.0;
+  std::int64_t count = 0;
+  for (const auto& batch : batches) {
+    const auto l = compile_detail::compute_losses(net, batch, false, nullptr);
+    sum += (l.nll_action + net.config.beta_s * l.nll_state).item<double>() * static_cast<double>(batch.size);
+    count += batch.size;
+  }
+  return count > 0 ? sum / static_cast<double>(count) : 0.0;
+}
+
+}  // namespace
+
+CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const std::vector<StepSequence>& valid,
+                                   const ProgressCallback& progress) {
+  configure_torch_threads();
+  config_.validate("compile config");
+  if (train.empty()) throw InputError("training data", "no trajectories");
+  const auto train_steps = to_model_inputs(train, config_, "training trajectory");
+  const auto valid_steps = to_model_inputs(valid, config_, "validation trajectory");
+  std::vector<std::size_t> usable;
+  for (std::size_t i = 0; i < train_steps.size(); ++i)
+    if (train_steps[i].steps.length() > 0) usable.push_back(i);
+  if (usable.empty()) throw InputError("training data", "every trajectory is empty");
+  const std::vector<Batch> valid_batches = fixed_batches(valid_steps, config_);
+
+  const auto start_time = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(); };
+  auto generator = at::detail::createCPUGenerator(config_.seed);
+  auto impl = std::make_unique<CompileModel::Impl>(CompileModel::Impl{CompileNetwork(config_, generator)});
+  CompileNetwork& net = impl->net;
+  std::vector<torch::Tensor> params = net.parameters();
+  torch::optim::Adam optimizer(params, torch::optim::AdamOptions(config_.learning_rate));
+  Rng shuffle_rng = Rng(config_.seed).fork(0x5eed5u);
+
+  summary_ = TrainingSummary{};
+  std::vector<torch::Tensor> best;
+  int checks_without_improvement = 0;
+  for (int it = 1; it <= config_.iterations; ++it) {
+    for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
+    TrainingProgress p;
+    p.iteration = it;
+    p.iterations = config_.iterations;
+    for (std::size_t first = 0; first < usable.size(); first += static_cast<std::size_t>(config_.batch_size)) {
+      std::vector<const StepSequence*> chunk;
+      for (std::size_t i = first; i < std::min(usable.size(), first + static_cast<std::size_t>(config_.batch_size)); ++i)
+        chunk.push_back(&train_steps[usable[i]].steps);
+      const Batch batch = compile_detail::make_batch(chunk, config_);
+      const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
+      optimizer.zero_grad();
+      losses.total.backward();
+      optimizer.step();
+      const double w = static_cast<double>(batch.size) / static_cast<double>(usable.size());
+      p.loss += losses.total.item<double>() * w;
+      p.nll_action += losses.nll_action.item<double>() * w;
+      p.nll_state += losses.nll_state.item<double>() * w;
+      p.kl_z += losses.kl_z.item<double>() * w;
+      p.kl_b += losses.kl_b.item<double>() * w;
+    }
+    if (!std::isfinite(p.loss))
+      throw InputError("compile training", "loss became non-finite at iteration " + std::to_string(it) +
+                                               " (learning rate too high or data not normalised?)");
+    summary_.iterations_run = it;
+    summary_.final_loss = p.loss;
+    const bool check = !valid_batches.empty() && (it % config_.eval_interval == 0 || it == config_.iterations);
+    if (check) {
+      p.valid_nll = validation_nll(net, valid_batches);
+      if (!(p.valid_nll >= summary_.best_valid_nll)) {  // also true while best is NaN
+        summary_.best_valid_nll = p.valid_nll;
+        summary_.best_iteration = it;
+        best.clear();
+        for (const auto& t : params) best.push_back(t.detach().clone());
+        checks_without_improvement = 0;
+        p.improved = true;
+      } else {
+        ++checks_without_improvement;
+      }
+    }
+    p.best_valid_nll = summary_.best_valid_nll;
+    p.elapsed_seconds = elapsed();
+    if (progress) progress(p);
+    if (checks_without_improvement >= config_.patience) {
+      summary_.stopped_early = true;
+      break;
+    }
+  }
+  if (!best.empty()) {
+    torch::NoGradGuard no_grad;
+    for (std::size_t i = 0; i < params.size(); ++i) params[i].copy_(best[i]);
+  } else {
+    summary_.best_iteration = summary_.iterations_run;
+  }
+  summary_.seconds = elapsed();
+  return CompileModel(std::move(impl));
+}
+
+}  // namespace sc

@@ -1,0 +1,185 @@
+// A masked LSTM over packed sequences with a hand-written backward pass (see compile_torch.hpp).
+// Matrix products go through torch (OpenBLAS); the element-wise gate arithmetic runs in plain loops over
+// contiguous rows because per-op dispatch, not arithmetic, dominates at these sizes.
+#include "teaching/skills/compile_torch.hpp"
+
+#include <algorithm>
+
+namespace sc::compile_detail {
+
+Packing Packing::from_lengths(const std::vector<std::int64_t>& lengths) {
+  Packing p;
+  p.rows = static_cast<std::int64_t>(lengths.size());
+  const std::int64_t steps = lengths.empty() ? 0 : lengths.front();
+  p.active.assign(static_cast<std::size_t>(steps), 0);
+  for (auto len : lengths)
+    for (std::int64_t t = 0; t < len; ++t) ++p.active[static_cast<std::size_t>(t)];
+  p.offset.resize(static_cast<std::size_t>(steps) + 1, 0);
+  for (std::size_t t = 0; t < p.active.size(); ++t) p.offset[t + 1] = p.offset[t] + p.active[t];
+  return p;
+}
+
+namespace {
+
+using torch::Tensor;
+using torch::autograd::AutogradContext;
+using torch::autograd::tensor_list;
+
+class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> {
+ public:
+  static Tensor forward(AutogradContext* ctx, Tensor xproj, Tensor h0, Tensor c0, Tensor w_hh, Tensor mask,
+                        std::vector<std::int64_t> active, std::int64_t rows) {
+    Packing local;
+    local.active = std::move(active);
+    local.rows = rows;
+    local.offset.assign(local.active.size() + 1, 0);
+    for (std::size_t t = 0; t < local.active.size(); ++t) local.offset[t + 1] = local.offset[t] + local.active[t];
+    const Packing* packing = &local;
+    const std::int64_t hid = w_hh.size(1);
+    const std::int64_t n_total = packing->total();
+    const auto opts = xproj.options();
+    Tensor gates = torch::empty({n_total, 4 * hid}, opts);  // activated gates (i, f, o, g)
+    Tensor c_raw = torch::empty({n_total, hid}, opts);      // cell before masking
+    Tensor tanh_c = torch::empty({n_total, hid}, opts);
+    Tensor h_out = torch::empty({n_total, hid}, opts);      // masked
+    Tensor c_out = torch::empty({n_total, hid}, opts);      // masked
+    Tensor h_init = h0.contiguous();
+    Tensor c_init = c0.contiguous();
+    const float* m = mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
+    const Tensor w_t = w_hh.t();
+
+    for (std::size_t t = 0; t < packing->active.size(); ++t) {
+      const std::int64_t n = packing->active[t], off = packing->offset[t];
+      if (n == 0) break;
+      Tensor h_prev = t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing->offset[t - 1], n);
+      Tensor c_prev = t == 0 ? c_init.narrow(0, 0, n) : c_out.narrow(0, packing->offset[t - 1], n);
+      Tensor g = gates.narrow(0, off, n);
+      torch::addmm_out(g, xproj.narrow(0, off, n), h_prev, w_t);
+      g.narrow(1, 0, 3 * hid).sigmoid_();
+      g.narrow(1, 3 * hid, hid).tanh_();
+      const float* gp = g.data_ptr<float>();
+      const float* cp = c_prev.data_ptr<float>();
+      float* cr = c_raw.data_ptr<float>() + off * hid;
+      for (std::int64_t r = 0; r < n; ++r) {
+        const float* gr = gp + r * 4 * hid;
+        for (std::int64_t j = 0; j < hid; ++j)
+          cr[r * hid + j] = gr[hid + j] * cp[r * hid + j] + gr[j] * gr[3 * hid + j];
+      }
+      Tensor tanh_rows = tanh_c.narrow(0, off, n);
+      torch::tanh_out(tanh_rows, c_raw.narrow(0, off, n));
+      const float* tc = tanh_c.data_ptr<float>() + off * hid;
+      float* ho = h_out.data_ptr<float>() + off * hid;
+      float* co = c_out.data_ptr<float>() + off * hid;
+      for (std::int64_t r = 0; r < n; ++r) {
+        const float scale = m ? m[off + r] : 1.0f;
+        const float* gr = gp + r * 4 * hid;
+        for (std::int64_t j = 0; j < hid; ++j) {
+          ho[r * hid + j] = scale * gr[2 * hid + j] * tc[r * hid + j];
+          co[r * hid + j] = scale * cr[r * hid + j];
+        }
+      }
+    }
+    ctx->save_for_backward({w_hh, h_init, c_init, mask});
+    ctx->saved_data["gates"] = gates;
+    ctx->saved_data["c_raw"] = c_raw;
+    ctx->saved_data["tanh_c"] = tanh_c;
+    ctx->saved_data["h_out"] = h_out;
+    ctx->saved_data["c_out"] = c_out;
+    ctx->saved_data["active"] = local.active;
+    ctx->saved_data["rows"] = rows;
+
+    return h_out;
+  }
+
+  static tensor_list backward(AutogradContext* ctx, tensor_list grad_outputs) {
+    const auto saved = ctx->get_saved_variables();
+    const Tensor& w_hh = saved[0];
+    const Tensor& h_init = saved[1];
+    const Tensor& c_init = saved[2];
+    const Tensor& mask = saved[3];
+    const Tensor gates = ctx->saved_data["gates"].toTensor();
+    const Tensor c_raw = ctx->saved_data["c_raw"].toTensor();
+    const Tensor tanh_c = ctx->saved_data["tanh_c"].toTensor();
+    const Tensor h_out = ctx->saved_data["h_out"].toTensor();
+    const Tensor c_out = ctx->saved_data["c_out"].toTensor();
+    Packing local;
+    local.active = ctx->saved_data["active"].toIntVector();
+    local.rows = ctx->saved_data["rows"].toInt();
+    local.offset.assign(local.active.size() + 1, 0);
+    for (std::size_t t = 0; t < local.active.size(); ++t) local.offset[t + 1] = local.offset[t] + local.active[t];
+    const Packing* packing = &local;
+
+    const std::int64_t hid = w_hh.size(1), n_total = packing->total();
+    const auto opts = gates.options();
+    Tensor grad_h_out = grad_outputs[0].defined() ? grad_outputs[0].contiguous() : torch::zeros({n_total, hid}, opts);
+    Tensor d_gates = torch::zeros({n_total, 4 * hid}, opts);
+    Tensor d_mask = mask.numel() > 0 ? torch::zeros({n_total}, opts) : Tensor();
+    Tensor dh = torch::zeros({packing->rows, hid}, opts);  // gradient w.r.t. h_{t} (masked) from step t+1
+    Tensor dc = torch::zeros({packing->rows, hid}, opts);
+    const float* m = mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
+    float* dm = d_mask.defined() ? d_mask.data_ptr<float>() : nullptr;
+
+    for (std::size_t ti = packing->active.size(); ti-- > 0;) {
+      const std::int64_t n = packing->active[ti], off = packing->offset[ti];
+      if (n == 0) continue;
+      const float* gp = gates.data_ptr<float>() + off * 4 * hid;
+      const float* cr = c_raw.data_ptr<float>() + off * hid;
+      const float* tc = tanh_c.data_ptr<float>() + off * hid;
+      const float* gho = grad_h_out.data_ptr<float>() + off * hid;
+      const float* cprev = ti == 0 ? c_init.data_ptr<float>() : c_out.data_ptr<float>() + packing->offset[ti - 1] * hid;
+      float* dg = d_gates.data_ptr<float>() + off * 4 * hid;
+      float* dhp = dh.data_ptr<float>();
+      float* dcp = dc.data_ptr<float>();
+      for (std::int64_t r = 0; r < n; ++r) {
+        const float scale = m ? m[off + r] : 1.0f;
+        const float* g = gp + r * 4 * hid;
+        float* d = dg + r * 4 * hid;
+        float dm_acc = 0.0f;
+        for (std::int64_t j = 0; j < hid; ++j) {
+          const std::int64_t k = r * hid + j;
+          const float i = g[j], f = g[hid + j], o = g[2 * hid + j], gg = g[3 * hid + j];
+          const float d_h = gho[k] + dhp[k];
+          const float d_c_masked = dcp[k];
+          dm_acc += d_h * o * tc[k] + d_c_masked * cr[k];
+          const float d_ht = scale * d_h;
+          float d_ct = scale * d_c_masked + d_ht * o * (1.0f - tc[k] * tc[k]);
+          const float d_o = d_ht * tc[k];
+          d[j] = d_ct * gg * i * (1.0f - i);
+          d[hid + j] = d_ct * cprev[k] * f * (1.0f - f);
+          d[2 * hid + j] = d_o * o * (1.0f - o);
+          d[3 * hid + j] = d_ct * i * (1.0f - gg * gg);
+          dcp[k] = d_ct * f;  // now the gradient w.r.t. c_{t-1}
+        }
+        if (dm) dm[off + r] = dm_acc;
+      }
+      // Gradient w.r.t. h_{t-1} for the rows that ran at step t (the others ended earlier and stay zero).
+      Tensor dh_rows = dh.narrow(0, 0, n);
+      torch::mm_out(dh_rows, d_gates.narrow(0, off, n), w_hh);
+    }
+
+    // dW_hh = sum_t dG_t^T h_{t-1}: one product over the packed sequence instead of one per step.
+    Tensor h_prev = torch::empty({n_total, hid}, opts);
+    for (std::size_t t = 0; t < packing->active.size(); ++t) {
+      const std::int64_t n = packing->active[t];
+      if (n == 0) break;
+      h_prev.narrow(0, packing->offset[t], n)
+          .copy_(t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing->offset[t - 1], n));
+    }
+    Tensor d_w_hh = d_gates.t().mm(h_prev);
+    return {d_gates, dh, dc, d_w_hh, d_mask, Tensor(), Tensor()};
+  }
+};
+
+}  // namespace
+
+torch::Tensor packed_lstm(const torch::Tensor& xproj, const torch::Tensor& h0, const torch::Tensor& c0,
+                          const torch::Tensor& w_hh, const torch::Tensor& mask, const Packing& packing) {
+  // Custom autograd functions reject undefined inputs: "no initial state" becomes zeros and "no mask" an
+  // empty tensor.
+  const torch::Tensor zeros = torch::zeros({packing.rows, w_hh.size(1)}, xproj.options());
+  return PackedLstmFunction::apply(xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh,
+                                   mask.defined() ? mask.contiguous() : torch::empty({0}, xproj.options()),
+                                   packing.active, packing.rows);
+}
+
+}  // namespace sc::compile_detail

@@ -1,0 +1,50 @@
+#include "teaching/skills/compile_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+TEST(CompileConfig, TaskDefaultsFollowThePaper) {
+  const CompileConfig p = CompileConfig::defaults_for("parking");
+  EXPECT_EQ(p.latent_size, 16);
+  EXPECT_EQ(p.num_segments, 4);
+  EXPECT_DOUBLE_EQ(p.prior_rate, 10.0);
+  EXPECT_DOUBLE_EQ(p.beta_s, 1.0);
+  EXPECT_EQ(p.mode, CompileMode::StateDiffAction);
+  EXPECT_DOUBLE_EQ(p.learning_rate, 1e-3);
+  EXPECT_EQ(p.batch_size, 100);
+  const CompileConfig w = CompileConfig::defaults_for("writing");
+  EXPECT_EQ(w.latent_size, 24);
+  EXPECT_EQ(w.num_segments, 8);
+  EXPECT_EQ(w.mode, CompileMode::Action);
+  EXPECT_DOUBLE_EQ(w.learning_rate, 5e-3);
+  EXPECT_EQ(w.batch_size, 50);
+  EXPECT_GT(w.resample_step, 0.0);
+  EXPECT_THROW(CompileConfig::defaults_for("juggling"), InputError);
+}
+
+TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
+  CompileConfig c = CompileConfig::parking_defaults();
+  c.seed = 42;
+  c.resample_step = 2.5;
+  const Json j = to_json(c);
+  const CompileConfig back = compile_config_from_json(JsonView(j, "m.json"));
+  EXPECT_EQ(to_json(back), j);
+  Json bad = j;
+  bad["mode"] = "telepathy";
+  try {
+    compile_config_from_json(JsonView(bad, "m.json"));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.json: $.mode"), std::string::npos) << e.what();
+  }
+  CompileConfig invalid = c;
+  invalid.num_segments = 0;
+  EXPECT_THROW(invalid.validate("cfg"), InputError);
+}
+
+}  // namespace
+}  // namespace sc

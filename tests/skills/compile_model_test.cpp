@@ -1,0 +1,147 @@
+// CompILE model files: round trip, sidecar, and one-line errors for every kind of bad file.
+#include "teaching/skills/compile_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+#include "engine/core/error.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/compile_trainer.hpp"
+#include "teaching/skills/model_file.hpp"
+#include "teaching/skills/synthetic_sequences.hpp"
+
+namespace sc {
+namespace {
+
+std::filesystem::path scratch(const std::string& name) {
+  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  auto base = std::filesystem::path(dir ? dir : "/tmp") / "compile_model_test";
+  std::filesystem::create_directories(base);
+  return base / name;
+}
+
+std::string bytes_of(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::filesystem::path& p, const std::string& b) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out.write(b.data(), static_cast<std::streamsize>(b.size()));
+}
+
+std::vector<StepSequence> data() {
+  std::vector<StepSequence> out;
+  for (const auto& p : constant_primitive_sequences(12, 3, 3, 4, 9, 12, 21)) out.push_back(p.steps);
+  return out;
+}
+
+// A small statediff+action model (the parking mode), trained for two iterations.
+std::filesystem::path trained_model() {
+  CompileConfig c = CompileConfig::parking_defaults();
+  c.task = "parking";
+  c.hidden = 16;
+  c.latent_size = 5;
+  c.iterations = 2;
+  c.batch_size = 6;
+  const auto path = scratch("model.scm");
+  ModelProvenance prov;
+  prov.data_description = "12 synthetic sequences";
+  prov.git_revision = "abc123";
+  CompileTrainer trainer(c);
+  CompileModel model = trainer.train(data(), data());
+  prov.metrics = trainer.summary().to_json();
+  model.save(path, prov);
+  return path;
+}
+
+void expect_load_error(const std::filesystem::path& p, const std::string& problem, const std::string& task = "",
+                       int state_dim = -1, int action_dim = -1) {
+  try {
+    CompileModel::load(p, task, state_dim, action_dim);
+    FAIL() << "no error for " << p << " (" << problem << ")";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(p.string()), std::string::npos) << what;
+    EXPECT_NE(what.find(problem), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
+  const auto path = trained_model();
+  const auto trajectories = data();
+  const CompileExtractor loaded = CompileExtractor::load(path, "parking", 12, 2);
+  const CompileModel again = CompileModel::load(path);
+  const auto segs = loaded.extract_all(trajectories);
+  EXPECT_EQ(segs, again.segment(trajectories));
+  for (std::size_t i = 0; i < trajectories.size(); ++i) {
+    EXPECT_EQ(loaded.extract(trajectories[i]), segs[i]);  // batched == one at a time
+    ASSERT_FALSE(segs[i].segments.empty());
+    EXPECT_EQ(segs[i].segments.front().begin, 0);
+    EXPECT_EQ(segs[i].segments.back().end, trajectories[i].length());
+    for (std::size_t k = 1; k < segs[i].segments.size(); ++k)
+      EXPECT_EQ(segs[i].segments[k].begin, segs[i].segments[k - 1].end);
+    for (const auto& s : segs[i].segments) {
+      EXPECT_GT(s.length(), 0);
+      EXPECT_LT(s.skill, loaded.num_skills());
+    }
+  }
+  // Saving the loaded model reproduces the file byte for byte.
+  again.save(scratch("resaved.scm"));
+  EXPECT_EQ(bytes_of(path), bytes_of(scratch("resaved.scm")));
+
+  const Json sidecar = read_json_file(model_sidecar_path(path));
+  EXPECT_EQ(sidecar.at("format_version"), kModelFormatVersion);
+  EXPECT_EQ(sidecar.at("task"), "parking");
+  EXPECT_EQ(sidecar.at("git_revision"), "abc123");
+  EXPECT_EQ(sidecar.at("data"), "12 synthetic sequences");
+  EXPECT_EQ(sidecar.at("config").at("mode"), "statediff+action");
+  EXPECT_TRUE(sidecar.at("metrics").contains("best_valid_nll"));
+
+  StepSequence wrong = trajectories[0];
+  wrong.state_dim = 3;
+  EXPECT_THROW(loaded.extract(wrong), InputError);
+}
+
+TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
+  const auto path = trained_model();
+  const std::string good = bytes_of(path);
+
+  expect_load_error(scratch("missing.scm"), "no such model file");
+  const auto truncated = scratch("truncated.scm");
+  write_bytes(truncated, good.substr(0, good.size() - 100));
+  expect_load_error(truncated, "checksum");
+  std::string flipped = good;
+  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
+  const auto corrupt = scratch("corrupt.scm");
+  write_bytes(corrupt, flipped);
+  expect_load_error(corrupt, "corrupt");
+  std::string newer = good;
+  newer[8] = static_cast<char>(kModelFormatVersion + 1);
+  const auto future = scratch("future.scm");
+  write_bytes(future, newer);
+  expect_load_error(future, "newer than this program supports");
+
+  expect_load_error(path, "trained for task \"parking\", expected \"writing\"", "writing");
+  expect_load_error(path, "expects 2-D actions, the task has 3", "", -1, 3);
+  expect_load_error(path, "expects 12-D states, the task has 6", "parking", 6, 2);
+
+  // A well-formed file whose config does not match its tensors (e.g. edited by hand).
+  ModelFileContents contents = read_model_file(path);
+  contents.header["config"]["latent_size"] = 9;
+  const auto mismatched = scratch("mismatched.scm");
+  write_model_file(mismatched, contents);
+  expect_load_error(mismatched, "wrong dimensions");
+  contents = read_model_file(path);
+  contents.header["format"] = "something-else";
+  const auto foreign = scratch("foreign.scm");
+  write_model_file(foreign, contents);
+  expect_load_error(foreign, "not a CompILE model");
+}
+
+}  // namespace
+}  // namespace sc
