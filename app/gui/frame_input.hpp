@@ -21,6 +21,14 @@ struct GamepadSnapshot {
   std::array<bool, SDL_CONTROLLER_BUTTON_MAX> buttons{};
 };
 
+// A mouse motion or button event between two frames. A pen trace needs the positions between frames too
+// (the writing task samples the mouse on every motion event as well as every frame).
+struct MouseEvent {
+  double time_seconds = 0;  // the event's SDL time stamp (ms since SDL_Init) / 1000
+  Vec2f pixels;             // framebuffer pixels, top-left origin
+  bool left_down = false;   // the left button's state after the event
+};
+
 struct FrameInput {
   bool mouse_inside = false;  // false: mouse_pixels is meaningless (headless or outside the window)
   Vec2f mouse_pixels;
@@ -33,6 +41,8 @@ struct FrameInput {
   std::vector<GamepadSnapshot> gamepads;  // connected game controllers, in connection order
   bool ui_wants_mouse = false;     // ImGui is using the mouse (hovering a window): scene input should ignore it
   bool ui_wants_keyboard = false;  // ImGui has keyboard focus (text field)
+  std::vector<MouseEvent> mouse_events;  // motion/button events since the previous frame, in order
+  double time_seconds = 0;               // when this frame was polled, on the clock of mouse_events (0 headless)
 
   // The same input with every "pressed/released" edge cleared: given to the 2nd and later simulation steps
   // of a frame so an edge acts once.
@@ -42,6 +52,7 @@ struct FrameInput {
     copy.mouse_released = {};
     copy.keys_pressed = {};
     copy.wheel = 0;
+    copy.mouse_events.clear();
     return copy;
   }
 };

@@ -56,6 +56,15 @@ void SdlInput::handle_event(const SDL_Event& event) {
         if (event.type == SDL_MOUSEBUTTONDOWN) edges_.mouse_pressed[static_cast<std::size_t>(i)] = true;
         else edges_.mouse_released[static_cast<std::size_t>(i)] = true;
       }
+      if (event.button.button == SDL_BUTTON_LEFT)
+        edges_.mouse_events.push_back({event.button.timestamp / 1000.0,
+                                       {static_cast<float>(event.button.x), static_cast<float>(event.button.y)},
+                                       event.type == SDL_MOUSEBUTTONDOWN});
+      break;
+    case SDL_MOUSEMOTION:  // window points here; poll() converts them to framebuffer pixels
+      edges_.mouse_events.push_back({event.motion.timestamp / 1000.0,
+                                     {static_cast<float>(event.motion.x), static_cast<float>(event.motion.y)},
+                                     (event.motion.state & SDL_BUTTON_LMASK) != 0});
       break;
     case SDL_MOUSEWHEEL: edges_.wheel += static_cast<float>(event.wheel.y); break;
     case SDL_KEYDOWN:
@@ -72,6 +81,8 @@ FrameInput SdlInput::poll(SDL_Window* window, float pixel_density) {
   int mx = 0, my = 0;
   const Uint32 buttons = SDL_GetMouseState(&mx, &my);
   input.mouse_inside = SDL_GetMouseFocus() == window;
+  input.time_seconds = static_cast<double>(SDL_GetTicks64()) / 1000.0;
+  for (MouseEvent& e : input.mouse_events) e.pixels = e.pixels * pixel_density;
   input.mouse_pixels = {static_cast<float>(mx) * pixel_density, static_cast<float>(my) * pixel_density};
   input.mouse_down = {(buttons & SDL_BUTTON_LMASK) != 0, (buttons & SDL_BUTTON_RMASK) != 0,
                       (buttons & SDL_BUTTON_MMASK) != 0};
