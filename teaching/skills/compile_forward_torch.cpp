@@ -8,8 +8,8 @@
 //    absolute positions, bug §6.9), normalised over the trajectory's true length, not the padded batch;
 //  * each segment is decoded from its own start (the hard start implied by the sampled earlier boundaries)
 //    instead of absolute t = 0 (bug §6.7: the decoder had to learn *when* its segment happens). This also
-//    lets the decoder run only from the segment's start to the trajectory's end (packed rows), which is
-//    most of the speed-up. Before its start a segment's weight is ~0; it reuses its first output there.
+//    lets the decoder run only over (about) its own segment (packed rows, see decode()), which is most of
+//    the speed-up. Before its start a segment's weight is ~0; it reuses its first output there.
 #include <algorithm>
 #include <cmath>
 
@@ -127,11 +127,19 @@ Decoded decode(const CompileNetwork& net, const Batch& batch, const Encoded& enc
   const std::int64_t k_count = cfg.num_segments, rows = b_size * k_count;
   const std::int64_t a_dim = cfg.action_dim, s_dim = cfg.uses_states() ? cfg.state_dim : 1;
 
+  // Each row runs from its segment's start to the sampled end plus a margin of half the segment (>= 3
+  // steps), capped at the trajectory's end. Further out the relaxed weight of the segment is small once
+  // boundaries sharpen, and the row's last output is reused there (gather clamps). This keeps decoder work
+  // near B x T instead of B x K x T (the reference decoded every segment over the whole padded batch).
   std::vector<std::int64_t> need(static_cast<std::size_t>(rows));
   for (std::int64_t b = 0; b < b_size; ++b)
-    for (std::int64_t k = 0; k < k_count; ++k)
-      need[static_cast<std::size_t>(b * k_count + k)] =
-          std::max<std::int64_t>(1, batch.lengths[static_cast<std::size_t>(b)] - enc.start[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)]);
+    for (std::int64_t k = 0; k < k_count; ++k) {
+      const std::int64_t len = batch.lengths[static_cast<std::size_t>(b)];
+      const std::int64_t s = enc.start[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)];
+      const std::int64_t e = std::max<std::int64_t>(s, enc.position[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)]);
+      const std::int64_t reach = std::min(len, e + std::max<std::int64_t>(3, (e - s) / 2));
+      need[static_cast<std::size_t>(b * k_count + k)] = std::max<std::int64_t>(1, reach - s);
+    }
   std::vector<std::int64_t> order(static_cast<std::size_t>(rows));
   for (std::int64_t r = 0; r < rows; ++r) order[static_cast<std::size_t>(r)] = r;
   std::stable_sort(order.begin(), order.end(), [&](std::int64_t a, std::int64_t b) {
@@ -149,30 +157,29 @@ Decoded decode(const CompileNetwork& net, const Batch& batch, const Encoded& enc
   const Tensor h0 = net.dec_1a(torch::relu(net.dec_1(z)));
   const Tensor c0 = net.dec_1b(h0);
 
-  // Pass 1 (no autograd): roll out to learn what each step feeds back. The reference feeds the decoder
-  // its own previous outputs with the gradient stopped, so these inputs are constants for autograd.
+  // Pass 1 (no autograd): run the decoder step by step to learn what each step feeds back (the reference
+  // feeds the decoder its own previous outputs with the gradient stopped, so they are constants for
+  // autograd). Pass 2 then attaches ONE packed-LSTM graph node that replays these very steps.
   Tensor fb_action = torch::zeros({n_total, a_dim}), fb_state = torch::zeros({n_total, s_dim});
+  compile_detail::PackedLstmRun run(packing, hid, fb_action.options());
   {
     torch::NoGradGuard no_grad;
-    Tensor h = h0, c = c0, prev_a = torch::zeros({rows, a_dim}), prev_s = torch::zeros({rows, s_dim});
-    const Tensor w_t = net.dec_hh.t();
+    const Tensor h_init = h0.detach(), c_init = c0.detach();
+    Tensor prev_a = torch::zeros({rows, a_dim}), prev_s = torch::zeros({rows, s_dim});
     for (std::size_t j = 0; j < packing.active.size(); ++j) {
       const std::int64_t n = packing.active[j], off = packing.offset[j];
       fb_action.narrow(0, off, n).copy_(prev_a.narrow(0, 0, n));
       fb_state.narrow(0, off, n).copy_(prev_s.narrow(0, 0, n));
-      if (j + 1 == packing.active.size()) break;
       const Tensor x = embed_decoder_input(net, prev_a.narrow(0, 0, n), prev_s.narrow(0, 0, n));
-      const Tensor gates = torch::addmm(net.dec_ih(x), h.narrow(0, 0, n), w_t);
-      const Tensor ifo = torch::sigmoid(gates.narrow(1, 0, 3 * hid));
-      c = ifo.narrow(1, hid, hid) * c.narrow(0, 0, n) + ifo.narrow(1, 0, hid) * torch::tanh(gates.narrow(1, 3 * hid, hid));
-      h = ifo.narrow(1, 2 * hid, hid) * torch::tanh(c);
+      run.step(packing, j, net.dec_ih(x), h_init, c_init, net.dec_hh, Tensor());
+      if (j + 1 == packing.active.size()) break;
+      const Tensor h = run.h_out.narrow(0, off, n);
       prev_a = torch::tanh(net.head_action(h));
       if (cfg.uses_states()) prev_s = net.head_state(h);
     }
   }
-  // Pass 2 (autograd): the same recurrence with known inputs, as one packed LSTM node.
   const Tensor xd = embed_decoder_input(net, fb_action, fb_state);
-  const Tensor hd = packed_lstm(net.dec_ih(xd), h0, c0, net.dec_hh, Tensor(), packing);
+  const Tensor hd = packed_lstm(net.dec_ih(xd), h0, c0, net.dec_hh, Tensor(), packing, &run);
 
   std::vector<std::int64_t> gather(static_cast<std::size_t>(rows * t_max));
   for (std::int64_t b = 0; b < b_size; ++b)

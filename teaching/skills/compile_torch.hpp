@@ -33,8 +33,21 @@ struct Packing {
 //   mask [N] or undefined: after each step h and c are multiplied by the row's mask value (CompILE's
 //   soft reset before the previous boundary, reference-facts §3.4 step 1); gradients flow into the mask.
 // Returns h [N, H] (after masking).
+// Buffers of one packed LSTM run; step() advances it by one step (also usable without autograd, e.g. for
+// an open-loop decoder whose next input depends on the previous output).
+struct PackedLstmRun {
+  torch::Tensor gates, c_raw, tanh_c, h_out, c_out;  // [N, 4H] activated (i, f, o, g); [N, H] each
+  PackedLstmRun() = default;
+  PackedLstmRun(const Packing& packing, std::int64_t hidden, const torch::TensorOptions& options);
+  // Step t from the projected inputs of its active rows; h_init/c_init [rows, H] feed step 0.
+  void step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
+            const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask);
+};
+// `replay`: a run already computed with the same inputs; its buffers are reused instead of recomputing
+// the recurrence (the decoder computes its steps once, without autograd, to know its own feedback).
 torch::Tensor packed_lstm(const torch::Tensor& xproj, const torch::Tensor& h0, const torch::Tensor& c0,
-                          const torch::Tensor& w_hh, const torch::Tensor& mask, const Packing& packing);
+                          const torch::Tensor& w_hh, const torch::Tensor& mask, const Packing& packing,
+                          PackedLstmRun* replay = nullptr);
 
 // ---- parameters ---------------------------------------------------------------------------------------
 struct Linear {

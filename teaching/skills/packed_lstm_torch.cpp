@@ -19,6 +19,49 @@ Packing Packing::from_lengths(const std::vector<std::int64_t>& lengths) {
   return p;
 }
 
+
+PackedLstmRun::PackedLstmRun(const Packing& packing, std::int64_t hid, const torch::TensorOptions& opts) {
+  const std::int64_t n_total = packing.total();
+  gates = torch::empty({n_total, 4 * hid}, opts);
+  c_raw = torch::empty({n_total, hid}, opts);
+  tanh_c = torch::empty({n_total, hid}, opts);
+  h_out = torch::empty({n_total, hid}, opts);
+  c_out = torch::empty({n_total, hid}, opts);
+}
+
+void PackedLstmRun::step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
+                         const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask) {
+  const std::int64_t n = packing.active[t], off = packing.offset[t], hid = w_hh.size(1);
+  if (n == 0) return;
+  torch::Tensor h_prev = t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing.offset[t - 1], n);
+  torch::Tensor c_prev = t == 0 ? c_init.narrow(0, 0, n) : c_out.narrow(0, packing.offset[t - 1], n);
+  torch::Tensor g = gates.narrow(0, off, n);
+  torch::addmm_out(g, xproj_t, h_prev, w_hh.t());
+  g.narrow(1, 0, 3 * hid).sigmoid_();
+  g.narrow(1, 3 * hid, hid).tanh_();
+  const float* gp = g.data_ptr<float>();
+  const float* cp = c_prev.data_ptr<float>();
+  float* cr = c_raw.data_ptr<float>() + off * hid;
+  for (std::int64_t r = 0; r < n; ++r) {
+    const float* gr = gp + r * 4 * hid;
+    for (std::int64_t j = 0; j < hid; ++j) cr[r * hid + j] = gr[hid + j] * cp[r * hid + j] + gr[j] * gr[3 * hid + j];
+  }
+  torch::Tensor tanh_rows = tanh_c.narrow(0, off, n);
+  torch::tanh_out(tanh_rows, c_raw.narrow(0, off, n));
+  const float* tc = tanh_c.data_ptr<float>() + off * hid;
+  const float* m = mask.defined() && mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
+  float* ho = h_out.data_ptr<float>() + off * hid;
+  float* co = c_out.data_ptr<float>() + off * hid;
+  for (std::int64_t r = 0; r < n; ++r) {
+    const float scale = m ? m[off + r] : 1.0f;
+    const float* gr = gp + r * 4 * hid;
+    for (std::int64_t j = 0; j < hid; ++j) {
+      ho[r * hid + j] = scale * gr[2 * hid + j] * tc[r * hid + j];
+      co[r * hid + j] = scale * cr[r * hid + j];
+    }
+  }
+}
+
 namespace {
 
 using torch::Tensor;
@@ -28,57 +71,23 @@ using torch::autograd::tensor_list;
 class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> {
  public:
   static Tensor forward(AutogradContext* ctx, Tensor xproj, Tensor h0, Tensor c0, Tensor w_hh, Tensor mask,
-                        std::vector<std::int64_t> active, std::int64_t rows) {
+                        std::vector<std::int64_t> active, std::int64_t rows, PackedLstmRun* replay) {
     Packing local;
     local.active = std::move(active);
     local.rows = rows;
     local.offset.assign(local.active.size() + 1, 0);
     for (std::size_t t = 0; t < local.active.size(); ++t) local.offset[t + 1] = local.offset[t] + local.active[t];
-    const Packing* packing = &local;
-    const std::int64_t hid = w_hh.size(1);
-    const std::int64_t n_total = packing->total();
-    const auto opts = xproj.options();
-    Tensor gates = torch::empty({n_total, 4 * hid}, opts);  // activated gates (i, f, o, g)
-    Tensor c_raw = torch::empty({n_total, hid}, opts);      // cell before masking
-    Tensor tanh_c = torch::empty({n_total, hid}, opts);
-    Tensor h_out = torch::empty({n_total, hid}, opts);      // masked
-    Tensor c_out = torch::empty({n_total, hid}, opts);      // masked
     Tensor h_init = h0.contiguous();
     Tensor c_init = c0.contiguous();
-    const float* m = mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
-    const Tensor w_t = w_hh.t();
-
-    for (std::size_t t = 0; t < packing->active.size(); ++t) {
-      const std::int64_t n = packing->active[t], off = packing->offset[t];
-      if (n == 0) break;
-      Tensor h_prev = t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing->offset[t - 1], n);
-      Tensor c_prev = t == 0 ? c_init.narrow(0, 0, n) : c_out.narrow(0, packing->offset[t - 1], n);
-      Tensor g = gates.narrow(0, off, n);
-      torch::addmm_out(g, xproj.narrow(0, off, n), h_prev, w_t);
-      g.narrow(1, 0, 3 * hid).sigmoid_();
-      g.narrow(1, 3 * hid, hid).tanh_();
-      const float* gp = g.data_ptr<float>();
-      const float* cp = c_prev.data_ptr<float>();
-      float* cr = c_raw.data_ptr<float>() + off * hid;
-      for (std::int64_t r = 0; r < n; ++r) {
-        const float* gr = gp + r * 4 * hid;
-        for (std::int64_t j = 0; j < hid; ++j)
-          cr[r * hid + j] = gr[hid + j] * cp[r * hid + j] + gr[j] * gr[3 * hid + j];
-      }
-      Tensor tanh_rows = tanh_c.narrow(0, off, n);
-      torch::tanh_out(tanh_rows, c_raw.narrow(0, off, n));
-      const float* tc = tanh_c.data_ptr<float>() + off * hid;
-      float* ho = h_out.data_ptr<float>() + off * hid;
-      float* co = c_out.data_ptr<float>() + off * hid;
-      for (std::int64_t r = 0; r < n; ++r) {
-        const float scale = m ? m[off + r] : 1.0f;
-        const float* gr = gp + r * 4 * hid;
-        for (std::int64_t j = 0; j < hid; ++j) {
-          ho[r * hid + j] = scale * gr[2 * hid + j] * tc[r * hid + j];
-          co[r * hid + j] = scale * cr[r * hid + j];
-        }
-      }
+    PackedLstmRun run;
+    if (replay != nullptr) {
+      run = *replay;  // the caller already ran these steps (same inputs); only the graph node is new
+    } else {
+      run = PackedLstmRun(local, w_hh.size(1), xproj.options());
+      for (std::size_t t = 0; t < local.active.size(); ++t)
+        run.step(local, t, xproj.narrow(0, local.offset[t], local.active[t]), h_init, c_init, w_hh, mask);
     }
+    const Tensor gates = run.gates, c_raw = run.c_raw, tanh_c = run.tanh_c, h_out = run.h_out, c_out = run.c_out;
     ctx->save_for_backward({w_hh, h_init, c_init, mask});
     ctx->saved_data["gates"] = gates;
     ctx->saved_data["c_raw"] = c_raw;
@@ -166,20 +175,21 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
           .copy_(t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing->offset[t - 1], n));
     }
     Tensor d_w_hh = d_gates.t().mm(h_prev);
-    return {d_gates, dh, dc, d_w_hh, d_mask, Tensor(), Tensor()};
+    return {d_gates, dh, dc, d_w_hh, d_mask, Tensor(), Tensor(), Tensor()};
   }
 };
 
 }  // namespace
 
 torch::Tensor packed_lstm(const torch::Tensor& xproj, const torch::Tensor& h0, const torch::Tensor& c0,
-                          const torch::Tensor& w_hh, const torch::Tensor& mask, const Packing& packing) {
+                          const torch::Tensor& w_hh, const torch::Tensor& mask, const Packing& packing,
+                          PackedLstmRun* replay) {
   // Custom autograd functions reject undefined inputs: "no initial state" becomes zeros and "no mask" an
   // empty tensor.
   const torch::Tensor zeros = torch::zeros({packing.rows, w_hh.size(1)}, xproj.options());
   return PackedLstmFunction::apply(xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh,
                                    mask.defined() ? mask.contiguous() : torch::empty({0}, xproj.options()),
-                                   packing.active, packing.rows);
+                                   packing.active, packing.rows, replay);
 }
 
 }  // namespace sc::compile_detail
