@@ -12,22 +12,6 @@ void check_sqlite(sqlite3* db, int code, std::string_view what) {
   throw SqliteError((extended & 0xff) == (code & 0xff) ? extended : code, std::string(what) + ": " + text);
 }
 
-bool is_storage_fault(int primary_code) {
-  switch (primary_code) {
-    case SQLITE_FULL:
-    case SQLITE_READONLY:
-    case SQLITE_BUSY:
-    case SQLITE_LOCKED:
-    case SQLITE_IOERR:
-    case SQLITE_CANTOPEN:
-    case SQLITE_PERM:
-    case SQLITE_NOLFS:
-      return true;
-    default:
-      return false;
-  }
-}
-
 SqliteStatement::SqliteStatement(sqlite3* db, std::string_view sql) : db_(db) {
   check_sqlite(db_, sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &stmt_, nullptr), "prepare");
 }
@@ -161,10 +145,6 @@ bool SqliteDb::is_read_only() const { return sqlite3_db_readonly(db_, "main") ==
 std::int64_t SqliteDb::last_insert_id() const { return sqlite3_last_insert_rowid(db_); }
 
 void SqliteDb::set_busy_timeout(int milliseconds) { sqlite3_busy_timeout(db_, milliseconds); }
-
-void SqliteDb::disable_checkpoint_on_close() {
-  check_sqlite(db_, sqlite3_db_config(db_, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr), "configure");
-}
 
 SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
 

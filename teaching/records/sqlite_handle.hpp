@@ -60,7 +60,7 @@ class SqliteStatement {
 class SqliteDb {
  public:
   enum class Mode { ReadOnly, ReadWriteCreate };
-  // `uri_suffix` (e.g. "immutable=1") opens through a file: URI with that query.
+  // A non-empty `uri_query` (e.g. "immutable=1") opens through a file: URI with that query.
   SqliteDb(const std::filesystem::path& file, Mode mode, std::string_view uri_query = {});
   ~SqliteDb();
   SqliteDb(const SqliteDb&) = delete;
@@ -75,8 +75,6 @@ class SqliteDb {
   bool is_read_only() const;
   std::int64_t last_insert_id() const;
   void set_busy_timeout(int milliseconds);
-  // A connection that only validates must not checkpoint a WAL into the file on close.
-  void disable_checkpoint_on_close();
   sqlite3* raw() { return db_; }
 
  private:
@@ -100,7 +98,5 @@ class SqliteTransaction {
 
 // Throws SqliteError for `code` unless it is SQLITE_OK/ROW/DONE; `db` supplies the message (may be null).
 void check_sqlite(sqlite3* db, int code, std::string_view what);
-// True for failures of the storage rather than of the request: full, read-only, locked, I/O, cannot open.
-bool is_storage_fault(int primary_code);
 
 }  // namespace sc::records
