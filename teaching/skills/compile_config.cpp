@@ -48,12 +48,13 @@ CompileConfig CompileConfig::writing_defaults() {
   c.learning_rate = 5e-3;
   c.batch_size = 50;
   // Writing actions are 1-px pen steps (T ~ 1250..2700 per word): far more steps than segmentation needs
-  // and the reason the reference took 415 s per batch. We resample to 5 px of path length per model step
-  // (T ~ 250..600; a 20-px connector still spans 4 steps). The reference's Poisson rate 250 was a mean
-  // segment of ~250 raw steps (~1.1 px each); the same path length in 5-px steps is ~55, and a word of 8
-  // symbols at ~2000 px / 8 = 250 px per symbol gives 50 steps: we use 50.
-  c.resample_step = 5.0;
-  c.prior_rate = 50.0;
+  // and the reason the reference took 415 s per batch. We resample to 8 px of path length per model step
+  // (T ~ 150..370; a 20-px connector still spans 2-3 steps, boundaries map back to exact action indices,
+  // and +-8 px is far inside the +-5 % of a ~2000-px word that evaluation tolerates). The reference's
+  // Poisson rate 250 was a mean segment of ~250 raw steps (~1.1 px each) = ~275 px; a word of 8 symbols at
+  // ~2000 px gives ~250 px per symbol; 250 px in 8-px steps is ~31: we use 30.
+  c.resample_step = 8.0;
+  c.prior_rate = 30.0;
   c.iterations = 60;
   c.eval_interval = 2;
   c.patience = 10;
