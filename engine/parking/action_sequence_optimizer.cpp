@@ -10,7 +10,7 @@ namespace sc {
 ActionSequenceOptimizer::ActionSequenceOptimizer(const ParkingScenario& scenario, const ParkingLayout& layout,
                                                  const PlanningCostWeights& weights)
     : weights_(weights),
-      start_{0.0, 0.0, scenario.heading0, 0.0},
+      start_(initial_vehicle_state(scenario)),
       goal_(goal_pose(scenario)),
       depth_free_(weights.depth_free),
       arrival_speed_scale_(weights.arrival_speed_scale),

@@ -36,7 +36,7 @@ std::vector<ManoeuvreGuess> search_manoeuvres(const ParkingScenario& scenario, c
     for (double s1 : kSteerings) {
       for (int k1 : kFirstPhaseSteps) {
         if (k1 == 0 && (d1 < 0 || s1 != 0.0)) continue;  // one "no first phase" entry
-        Walker prefix{VehicleState{0.0, 0.0, scenario.heading0, 0.0}};
+        Walker prefix{initial_vehicle_state(scenario)};
         const ParkingAction first{d1 * kThrottle, s1};
         for (int t = 0; t < k1 && !prefix.crashed; ++t) prefix.step(first, collisions);
         if (prefix.crashed) continue;

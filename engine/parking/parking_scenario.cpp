@@ -38,4 +38,8 @@ ParkingScenario sample_parking_scenario(Rng& rng, LotVariant variant, double rev
   return s;
 }
 
+VehicleState initial_vehicle_state(const ParkingScenario& scenario) {
+  return scenario.start ? *scenario.start : VehicleState{0.0, 0.0, scenario.heading0, 0.0};
+}
+
 }  // namespace sc

@@ -2,9 +2,11 @@
 // A parking scenario: everything that, with the action sequence, determines an episode.
 #include <cstdint>
 #include <string>
+#include <optional>
 #include <string_view>
 
 #include "engine/parking/parking_lot.hpp"
+#include "engine/parking/vehicle_model.hpp"
 
 namespace sc {
 
@@ -25,9 +27,15 @@ struct ParkingScenario {
   LotVariant variant = LotVariant::Classic;
   std::uint32_t obstacle_seed = 0;  // parked-car layout (ignored by the classic lot)
   bool reverse_in = false;          // goal heading flipped: the car must end nose-out (backed in)
+  // Where the episode starts. Absent = the reference start: (0, 0) at rest with heading0. Drills set it
+  // to the state where their first expert segment starts (teaching/tasks, Alg. 3's initial state).
+  std::optional<VehicleState> start;
 
   bool operator==(const ParkingScenario&) const = default;
 };
+
+// The car's state at the start of the episode (the reference start unless `start` is set).
+VehicleState initial_vehicle_state(const ParkingScenario& scenario);
 
 // The goal pose: the spot centre, heading into the spot (flipped by pi for reverse-in goals).
 Pose goal_pose(const ParkingScenario& scenario);

@@ -27,7 +27,7 @@ ParkingSim::ParkingSim(const ParkingScenario& scenario)
 }
 
 void ParkingSim::reset() {
-  vehicle_ = VehicleState{0.0, 0.0, scenario_.heading0, 0.0};
+  vehicle_ = initial_vehicle_state(scenario_);
   steering_ = 0.0;
   steps_ = 0;
   done_ = succeeded_ = collided_ = false;

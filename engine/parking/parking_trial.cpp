@@ -95,16 +95,28 @@ ParkingScenario parse_parking_scenario(const JsonView& v) {
   const bool declared = s.reverse_in;
   parse_goal(v.at("goal"), s);
   if (reverse && s.reverse_in != declared) v.at("goal").at("heading").fail("goal heading contradicts reverse_in");
+  if (auto start = v.find("start")) {
+    // Drills start mid-manoeuvre; positions beyond +-1 km or speeds beyond the model's limit are corrupt.
+    VehicleState st;
+    st.x = start->at("x").number_in(-1000.0, 1000.0);
+    st.y = start->at("y").number_in(-1000.0, 1000.0);
+    st.heading = start->at("heading").number_in(-1000.0, 1000.0);
+    st.speed = start->at("speed").number_in(-parking::kMaxSpeed, parking::kMaxSpeed);
+    s.start = st;
+  }
   return s;
 }
 
 Json parking_scenario_to_json(const ParkingScenario& s) {
   const Pose goal = goal_pose(s);
-  return Json{{"heading0", s.heading0},
-              {"goal", {{"spot", s.goal_spot}, {"x", goal.x}, {"y", goal.y}, {"heading", goal.heading}}},
-              {"variant", std::string(to_string(s.variant))},
-              {"obstacle_seed", s.obstacle_seed},
-              {"reverse_in", s.reverse_in}};
+  Json doc{{"heading0", s.heading0},
+            {"goal", {{"spot", s.goal_spot}, {"x", goal.x}, {"y", goal.y}, {"heading", goal.heading}}},
+            {"variant", std::string(to_string(s.variant))},
+            {"obstacle_seed", s.obstacle_seed},
+            {"reverse_in", s.reverse_in}};
+  if (s.start)
+    doc["start"] = {{"x", s.start->x}, {"y", s.start->y}, {"heading", s.start->heading}, {"speed", s.start->speed}};
+  return doc;
 }
 
 ParkingTrial parse_parking_trial(const Json& doc, std::string_view source) {

@@ -29,6 +29,7 @@ struct VehicleState {
   double y = 0.0;
   double heading = 0.0;  // rad, never wrapped (as in the reference)
   double speed = 0.0;    // m/s along the heading; negative when reversing
+  bool operator==(const VehicleState&) const = default;
 };
 
 // Clips an action to [-1, 1]^2 (NaN becomes 0 so a corrupt input can never poison the state).

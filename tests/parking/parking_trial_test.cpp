@@ -10,6 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/parking/parking_replay.hpp"
+#include "engine/parking/parking_sim.hpp"
 
 namespace sc {
 namespace {
@@ -151,6 +152,38 @@ TEST(ParkingTrial, FileErrorsNameTheFile) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": not valid JSON: ", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sc
+
+namespace sc {
+namespace {
+
+TEST(ParkingScenarioStart, RoundTripsAndStartsTheSimulationThere) {
+  ParkingScenario s;
+  s.heading0 = 1.0;
+  s.goal_spot = 4;
+  s.start = VehicleState{3.5, -2.0, 0.7, -1.25};
+  const Json doc = parking_scenario_to_json(s);
+  EXPECT_EQ(parse_parking_scenario(JsonView(doc, "start.json")), s);
+  ParkingSim sim(s);
+  EXPECT_EQ(sim.vehicle(), *s.start);
+  ParkingScenario plain = s;
+  plain.start.reset();
+  EXPECT_FALSE(parking_scenario_to_json(plain).contains("start"));
+  EXPECT_EQ(ParkingSim(plain).vehicle(), (VehicleState{0.0, 0.0, 1.0, 0.0}));
+}
+
+TEST(ParkingScenarioStart, AbsurdStartSpeedIsRejectedWithItsPath) {
+  Json doc = parking_scenario_to_json(ParkingScenario{});
+  doc["start"] = {{"x", 0.0}, {"y", 0.0}, {"heading", 0.0}, {"speed", 99.0}};
+  try {
+    parse_parking_scenario(JsonView(doc, "bad.json"));
+    FAIL() << "accepted speed 99";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "bad.json: $.start.speed: value 99 is outside [-40, 40]");
   }
 }
 
