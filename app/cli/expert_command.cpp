@@ -88,7 +88,7 @@ int run_many(const ExpertArgs& args) {
   std::printf("  mean return             %.3f\n", total_return / args.count);
   std::printf("  mean steps to success   %.2f\n", successes ? static_cast<double>(success_steps) / successes : 0.0);
   std::printf("  collisions              %d\n", collisions);
-  std::printf("  planning time           median %.1f ms, max %.1f ms\n", median, times.back());
+  std::printf("  planning time (CPU)     median %.1f ms, max %.1f ms\n", median, times.back());
   if (!args.out_dir.empty()) std::printf("  trial files             %s/expert_*.json\n", args.out_dir.c_str());
   return 0;
 }
