@@ -51,6 +51,17 @@ class TaskKit {
   virtual std::string describe_skill(int skill) const = 0;
   // The time a learner gets for a trial of `steps` expert control steps, in seconds.
   virtual double time_limit_seconds(int expert_steps) const = 0;
+
+  // A projected drill (projector().project(plan)) as a trial document the app plays and draws like any
+  // trial: parking — {"task":"parking","scenario":{... "start": the drill's initial car state, goal of the
+  // last segment's expert}, "actions", "states", "rewards", "success", "source":"drill"}; writing —
+  // {"task":"writing","scenario":{"word": the characters the drill's segments come from}, "points": the
+  // stitched pen path on the canvas, "source":"drill"}.
+  virtual Json drill_trial(const PlayableDrill& drill) const = 0;
+  // The score (<= 0, 0 best) of a learner's attempt (a trial document) at a drill. Parking: the attempt's
+  // own last-step reward (its scenario carries the drill's start and goal). Writing: the overlap of the
+  // attempt's ink with the drill's pen path (the drill is not a whole word, so reward_of would not fit).
+  virtual double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const = 0;
 };
 
 }  // namespace sc
