@@ -29,17 +29,27 @@ void append_pen_up_move(const Point2& from, const Point2& to, std::vector<Writin
   append_differences(infill_reference({from, to}), false, steps);
 }
 
+// Height/width limit of a classic first stroke (see classic_character_points).
+constexpr double kMaxClassicAspect = 20.0;
+
 }  // namespace
 
-ClassicCharacterPoints classic_character_points(const StrokeDrawing& drawing) {
+ClassicCharacterPoints classic_character_points(const StrokeDrawing& drawing, std::string_view source) {
   if (drawing.strokes.empty()) throw std::invalid_argument("classic_character_points: no strokes");
   // Step 1: first stroke only (all five paper characters have exactly one).
   std::vector<Point2> pts = image_points(drawing.strokes.front());
   // Step 2: scale both coordinates so the stroke is exactly 100 px wide (no translation).
   auto [min_x, max_x] = std::minmax_element(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.x < b.x; });
   const double width = max_x->x - min_x->x;
-  if (!(width > 0.0)) throw InputError("classic character", "first stroke has zero width");
+  if (!(width > 0.0) || !std::isfinite(kScaleWidth / width))  // a width of 1e-308 is zero for scaling
+    throw InputError(source, "first stroke has zero width");
   const double scale = kScaleWidth / width;
+  // The shipped first strokes are at most 3x as tall as wide. One wild sample in a damaged file (found by
+  // tests/fuzz) made step 3 infill millions of points and hang the loader; refuse such a stroke instead.
+  auto [min_y, max_y] = std::minmax_element(pts.begin(), pts.end(), [](auto& a, auto& b) { return a.y < b.y; });
+  const double aspect = (max_y->y - min_y->y) / width;
+  if (!(aspect <= kMaxClassicAspect))
+    throw InputError("classic character", "first stroke is more than 20 times as tall as wide (corrupt stroke file?)");
   for (auto& p : pts) p = {p.x * scale, p.y * scale};
   // Step 3: infill to <= 1 px steps.
   pts = infill_reference(pts);
@@ -66,7 +76,7 @@ ClassicCharacterPoints classic_character_points(const StrokeDrawing& drawing) {
 
 Glyph classic_glyph(char symbol, const StrokeDrawing& drawing, std::string source) {
   Glyph g{symbol, std::move(source), {}};
-  append_differences(classic_character_points(drawing).points, true, g.steps);
+  append_differences(classic_character_points(drawing, g.source).points, true, g.steps);
   return g;
 }
 
