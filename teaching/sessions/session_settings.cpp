@@ -1,0 +1,28 @@
+#include "teaching/sessions/session_settings.hpp"
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+
+void SessionSettings::validate() const {
+  if (learner.empty()) throw InputError("session settings", "the learner's name is empty");
+  if (device.empty()) throw InputError("session settings", "the input device is empty");
+  if (pretest_count < 1 || pretest_count > 50)
+    throw InputError("session settings", "pretest_count must be within 1..50, got " + std::to_string(pretest_count));
+  if (eval_count < 1 || eval_count > 50)
+    throw InputError("session settings", "eval_count must be within 1..50, got " + std::to_string(eval_count));
+}
+
+Json settings_to_json(const SessionSettings& settings) {
+  return Json{{"pretest_count", settings.pretest_count},
+              {"eval_count", settings.eval_count},
+              {"device", settings.device}};
+}
+
+void read_settings_json(const JsonView& view, SessionSettings& settings) {
+  if (auto v = view.find("pretest_count")) settings.pretest_count = static_cast<int>(v->integer());
+  if (auto v = view.find("eval_count")) settings.eval_count = static_cast<int>(v->integer());
+  if (auto v = view.find("device")) settings.device = v->string();
+}
+
+}  // namespace sc

@@ -1,0 +1,35 @@
+#pragma once
+// What the summary screen shows for one round: pre-test vs evaluation score, the improvement and how each
+// skill's expertise changed (Alg. 2 on the pre-test vs Alg. 2 on the evaluation, both against the expert's
+// segmentation of their own scenarios; the same number of trials keeps the two comparable).
+#include <string>
+#include <vector>
+
+#include "teaching/expertise/expertise_estimation.hpp"
+
+namespace sc {
+
+struct SkillChange {
+  int skill = 0;
+  double before = 0.0;    // E_m on the pre-test (<= 0, 0 = no mistakes seen)
+  double after = 0.0;     // E_m on this round's evaluation
+  bool targeted = false;  // drilled in this round
+  bool seen = false;      // the expert used it in the pre-test or evaluation scenarios
+};
+
+struct RoundSummary {
+  int round = 1;
+  double pretest_mean = 0.0;  // mean task reward (<= 0, 0 best)
+  double eval_mean = 0.0;
+  double improvement = 0.0;   // eval_mean - pretest_mean: > 0 means closer to the expert
+  int practice_trials = 0;    // practice trials played this round (extra attempts included)
+  std::vector<SkillChange> skills;  // every skill the kit knows, by id
+};
+
+double mean_of(const std::vector<double>& values);  // 0 for an empty list
+
+RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewards,
+                             const std::vector<double>& eval_rewards, const ExpertiseEstimate& before,
+                             const ExpertiseEstimate& after, const std::vector<int>& targets, int practice_trials);
+
+}  // namespace sc
