@@ -2,12 +2,15 @@
 // State shared by all screens of one run: what the learner chose on the start screen, where records live,
 // and the seed every random choice derives from (fixed in screenshots so they are reproducible).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "app/gui/gui_main.hpp"
 
 namespace sc {
+
+class LearnFlow;  // app/gui/screens/learn_flow.hpp: the trainer's session, shared by its screens
 
 enum class TaskKind { parking, writing };
 
@@ -33,6 +36,7 @@ struct AppServices {
   bool headless = false;          // true for screenshots and the demo: no window, no real devices
   TaskKind task = TaskKind::parking;
   DeviceChoice device;
+  std::shared_ptr<LearnFlow> learn_flow;  // created by the trainer's first screen
 };
 
 }  // namespace sc

@@ -23,7 +23,8 @@ ClockAdvance FixedStepClock::advance(double elapsed_seconds) {
   if (whole > max_steps_) {
     result.steps = max_steps_;
     const double kept = accumulator_ - max_steps_ * step_;
-    const double remainder = std::fmod(kept, step_);
+    // Same rounding allowance as above, so an exact multiple of the step leaves nothing behind.
+    const double remainder = std::max(0.0, kept - std::floor(kept / step_ + 1e-9) * step_);
     result.dropped_seconds = kept - remainder;
     accumulator_ = remainder;
   } else {

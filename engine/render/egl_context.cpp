@@ -39,7 +39,8 @@ class EglContext final : public GlContext {
     if (extensions == nullptr || std::strstr(extensions, "EGL_KHR_surfaceless_context") == nullptr)
       throw InputError(kWhere, "the EGL display lacks EGL_KHR_surfaceless_context");
     if (eglBindAPI(EGL_OPENGL_API) == EGL_FALSE) throw InputError(kWhere, "desktop OpenGL is not supported");
-    const EGLint config_attribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    // The default EGL_SURFACE_TYPE is EGL_WINDOW_BIT, which a surfaceless display never offers.
+    const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint config_count = 0;
     if (eglChooseConfig(display_, config_attribs, &config, 1, &config_count) == EGL_FALSE || config_count < 1)

@@ -1,5 +1,6 @@
 #include "engine/render/imgui_layer.hpp"
 
+#include <SDL_scancode.h>
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
@@ -10,6 +11,37 @@
 #include "engine/core/error.hpp"
 
 namespace sc {
+namespace {
+
+// ImGui 1.86 reads keys through io.KeyMap -> io.KeysDown[] and asserts that keyboard navigation keys are mapped.
+// We use SDL scancodes (as its SDL backend does, which re-sets the same map in the window), so headless runs
+// and scripted tests can press keys the same way.
+void map_keys_to_sdl_scancodes(ImGuiIO& io) {
+  io.KeyMap[ImGuiKey_Tab] = SDL_SCANCODE_TAB;
+  io.KeyMap[ImGuiKey_LeftArrow] = SDL_SCANCODE_LEFT;
+  io.KeyMap[ImGuiKey_RightArrow] = SDL_SCANCODE_RIGHT;
+  io.KeyMap[ImGuiKey_UpArrow] = SDL_SCANCODE_UP;
+  io.KeyMap[ImGuiKey_DownArrow] = SDL_SCANCODE_DOWN;
+  io.KeyMap[ImGuiKey_PageUp] = SDL_SCANCODE_PAGEUP;
+  io.KeyMap[ImGuiKey_PageDown] = SDL_SCANCODE_PAGEDOWN;
+  io.KeyMap[ImGuiKey_Home] = SDL_SCANCODE_HOME;
+  io.KeyMap[ImGuiKey_End] = SDL_SCANCODE_END;
+  io.KeyMap[ImGuiKey_Insert] = SDL_SCANCODE_INSERT;
+  io.KeyMap[ImGuiKey_Delete] = SDL_SCANCODE_DELETE;
+  io.KeyMap[ImGuiKey_Backspace] = SDL_SCANCODE_BACKSPACE;
+  io.KeyMap[ImGuiKey_Space] = SDL_SCANCODE_SPACE;
+  io.KeyMap[ImGuiKey_Enter] = SDL_SCANCODE_RETURN;
+  io.KeyMap[ImGuiKey_Escape] = SDL_SCANCODE_ESCAPE;
+  io.KeyMap[ImGuiKey_KeyPadEnter] = SDL_SCANCODE_KP_ENTER;
+  io.KeyMap[ImGuiKey_A] = SDL_SCANCODE_A;
+  io.KeyMap[ImGuiKey_C] = SDL_SCANCODE_C;
+  io.KeyMap[ImGuiKey_V] = SDL_SCANCODE_V;
+  io.KeyMap[ImGuiKey_X] = SDL_SCANCODE_X;
+  io.KeyMap[ImGuiKey_Y] = SDL_SCANCODE_Y;
+  io.KeyMap[ImGuiKey_Z] = SDL_SCANCODE_Z;
+}
+
+}  // namespace
 
 ImGuiLayer::ImGuiLayer(GlContext& context) : context_(context) {
   // Resolve the fonts before touching ImGui: a missing asset must be a clean error, not an ImGui assert.
@@ -22,6 +54,7 @@ ImGuiLayer::ImGuiLayer(GlContext& context) : context_(context) {
   io.IniFilename = nullptr;  // no imgui.ini in the working directory; layouts are code, screenshots reproducible
   io.LogFilename = nullptr;
   io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavEnableGamepad;
+  map_keys_to_sdl_scancodes(io);
   context_.make_current();
   if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
     ImGui::DestroyContext(imgui_);

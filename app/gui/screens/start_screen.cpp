@@ -16,7 +16,7 @@
 namespace sc {
 namespace {
 
-constexpr const char* kTrainerScreen = "trainer";
+constexpr const char* kTrainerScreen = "learn_welcome";
 
 const char* practice_screen(TaskKind task) { return task == TaskKind::parking ? "free_drive" : "free_write"; }
 
@@ -82,27 +82,27 @@ class StartScreen final : public Screen {
     }
     const Color parked = Color::hex(0x2a3140);
     for (int i = 0; i < 10; ++i) {
-      if (i == 7) continue;  // the free spot
+      if (i == 8) continue;  // the free spot, right of the panel
       const float x = 2.5f + 3.0f * static_cast<float>(i);
       r.fill_rect({{x, 2.9f}, {1.05f, 2.2f}, 0.0f}, parked);
       if (i != 2) r.fill_rect({{x, 15.1f}, {1.05f, 2.2f}, 0.0f}, parked);
     }
-    const std::array<Vec2f, 6> ghost{Vec2f{3.0f, 9.0f}, Vec2f{12.0f, 9.0f}, Vec2f{19.0f, 9.2f},
-                                     Vec2f{22.5f, 8.6f}, Vec2f{23.5f, 6.5f}, Vec2f{23.5f, 3.2f}};
+    const std::array<Vec2f, 6> ghost{Vec2f{3.0f, 9.0f}, Vec2f{12.0f, 9.0f}, Vec2f{22.0f, 9.2f},
+                                     Vec2f{25.5f, 8.6f}, Vec2f{26.5f, 6.5f}, Vec2f{26.5f, 3.2f}};
     PathStyle round;
     round.join = LineJoin::round;
     r.ghost_ribbon(ghost, Stroke::world(1.6f), Color::hex(0x5b9bff, 0.16f), round);
     r.dashed_polyline(ghost, Stroke::world(0.08f), {0.6f, 0.4f}, Color::hex(0x5b9bff, 0.55f), round);
     r.arrow({8.0f, 9.0f}, {10.0f, 9.0f}, Stroke::world(0.1f), {0.5f, 0.45f}, Color::hex(0x8ab8ff, 0.7f));
-    r.arrow({23.5f, 6.0f}, {23.5f, 4.4f}, Stroke::world(0.1f), {0.5f, 0.45f}, Color::hex(0x8ab8ff, 0.7f));
+    r.arrow({26.5f, 6.0f}, {26.5f, 4.4f}, Stroke::world(0.1f), {0.5f, 0.45f}, Color::hex(0x8ab8ff, 0.7f));
     r.fill_rect({{4.2f, 9.0f}, {2.2f, 1.0f}, 0.0f}, Color::hex(0x2f6fd8, 0.85f));
     r.fill_rect({{5.9f, 9.0f}, {0.35f, 0.8f}, 0.0f}, Color::hex(0x8ab8ff, 0.9f));  // windscreen: the front
-    r.outline_rect({{23.5f, 2.9f}, {1.25f, 2.35f}, 0.0f}, Stroke::pixels(2.0f * ui.ui_scale),
+    r.outline_rect({{26.5f, 2.9f}, {1.25f, 2.35f}, 0.0f}, Stroke::pixels(2.0f * ui.ui_scale),
                    Color::hex(0x5b9bff, 0.6f));
     LabelStyle label;
     label.color = Color::hex(0x8ab8ff, 0.8f);
-    label.anchor = LabelAnchor::below;
-    draw_world_label(camera, {23.5f, 5.5f}, "goal", label);
+    label.anchor = LabelAnchor::right;
+    draw_world_label(camera, {27.75f, 2.9f}, "goal", label);
   }
 
   void draw_panel(UiContext& ui) {
@@ -145,11 +145,20 @@ class StartScreen final : public Screen {
     };
     const Option options[] = {{TaskKind::parking, "Parking\nBack a car into a free spot"},
                               {TaskKind::writing, "Writing\nBalinese characters"}};
+    // Cards are buttons: always visibly framed, the chosen one in the accent colour, left-aligned text.
+    ImGui::PushStyleVar(ImGuiStyleVar_ButtonTextAlign, ImVec2(0.0f, 0.5f));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(16.0f * s, 10.0f * s));
     for (const Option& option : options) {
       if (option.task == TaskKind::writing) ImGui::SameLine();
       const bool selected = services_.task == option.task;
-      if (ImGui::Selectable(option.label, selected, 0, card)) services_.task = option.task;
+      const ImGuiStyle& style = ImGui::GetStyle();
+      ImGui::PushStyleColor(ImGuiCol_Button, selected ? style.Colors[ImGuiCol_HeaderActive] : style.Colors[ImGuiCol_FrameBg]);
+      ImGui::PushStyleColor(ImGuiCol_ButtonHovered,
+                            selected ? style.Colors[ImGuiCol_HeaderActive] : style.Colors[ImGuiCol_FrameBgHovered]);
+      if (ImGui::Button(option.label, card)) services_.task = option.task;
+      ImGui::PopStyleColor(2);
     }
+    ImGui::PopStyleVar(2);
   }
 
   void draw_device_choice(UiContext& ui) {

@@ -1,0 +1,114 @@
+// Analysis and diagnosis: a progress note while the pre-test (or the last round's practice) is segmented and
+// Alg. 2 runs (a fraction of a second), then one bar per skill the expert used — longer = more mistakes —
+// each with a small picture of the skill's expert segment and the kit's plain words; the skills the drills
+// will target are highlighted.
+#include <imgui.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include "app/gui/navigator.hpp"
+#include "app/gui/screen.hpp"
+#include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_skill_picture.hpp"
+#include "app/gui/screens/learn_ui.hpp"
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+class LearnDiagnosisScreen final : public Screen {
+ public:
+  explicit LearnDiagnosisScreen(AppServices& services)
+      : services_(services),
+        flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Drills) : learn_flow(services)) {}
+
+  void update(const FrameInput& input, double) override {
+    confirm_ = confirm_ || learn_ui::confirm_pressed(input);
+    TrainingSession* s = flow_.session();
+    // The progress note is drawn first; the analysis runs on the next update.
+    if (s && s->phase() == SessionPhase::Diagnosis && ++frames_ > 1) {
+      try {
+        s->analyse();
+      } catch (const InputError& e) {
+        flow_.message = e.what();
+      }
+    }
+  }
+
+  void draw(UiContext& ui) override {
+    TrainingSession* s = flow_.session();
+    if (!s) {
+      ui.navigator.go_to("learn_welcome");
+      return;
+    }
+    if (s->phase() == SessionPhase::Diagnosis) {
+      learn_ui::begin_card(ui, "learn_analysis", 520.0f);
+      learn_ui::title(ui, "Analysing your trials...");
+      ImGui::ProgressBar(frames_ > 1 ? 0.9f : 0.3f, ImVec2(-1, 0), "");
+      if (!flow_.message.empty()) ImGui::TextWrapped("%s", flow_.message.c_str());
+      learn_ui::end_card();
+      return;
+    }
+    draw_diagnosis(ui, *s);
+  }
+
+ private:
+  void draw_diagnosis(UiContext& ui, TrainingSession& s) {
+    const float sc = ui.ui_scale;
+    const ExpertiseEstimate& e = s.diagnosis();
+    const TaskKit& kit = s.kit();
+    learn_ui::begin_card(ui, "learn_diagnosis", 900.0f);
+    learn_ui::title(ui, s.round() == 1 ? "What the pre-test showed" : "Where you stand now");
+    learn_ui::muted_wrapped("Each bar is one skill the expert uses; a longer bar means more trouble with it. The "
+                            "highlighted skills get drills now.");
+    if (!kit.extractor_notice().empty()) learn_ui::muted_wrapped(("Note: " + kit.extractor_notice()).c_str());
+    double worst = 1e-9;
+    for (double v : e.expertise) worst = std::max(worst, -v);
+    const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
+    ImDrawList& d = *ImGui::GetWindowDrawList();
+    const ImVec2 pic(110 * sc, 56 * sc);
+    for (int r = 0; r < shown; ++r) {
+      const int m = e.ranking[static_cast<std::size_t>(r)];
+      const bool drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
+        return std::find(it.target_skills.begin(), it.target_skills.end(), m) != it.target_skills.end();
+      });
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      if (const auto example = example_of_skill(kit.expert_pool(), m))
+        draw_skill_picture(d, at, pic, kit.expert_pool()[static_cast<std::size_t>(example->expert)], example->segment,
+                           drilled);
+      ImGui::Dummy(pic);
+      ImGui::SameLine(0, 14 * sc);
+      ImGui::BeginGroup();
+      const std::string words = kit.describe_skill(m);
+      if (drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
+      ImGui::Text("%s%s", words.c_str(), drilled ? "   - drills now" : "");
+      if (drilled) ImGui::PopStyleColor();
+      const float fraction = static_cast<float>(-e.expertise[static_cast<std::size_t>(m)] / worst);
+      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));
+      char overlay[32];
+      std::snprintf(overlay, sizeof overlay, "%.2f", e.expertise[static_cast<std::size_t>(m)]);
+      ImGui::ProgressBar(std::max(0.02f, fraction), ImVec2(-1, 18 * sc), overlay);
+      ImGui::PopStyleColor();
+      ImGui::EndGroup();
+    }
+    ImGui::Dummy(ImVec2(0, 6 * sc));
+    ImGui::Text("%d practice trials planned (%s).", s.practice_slot_count(),
+                std::string(condition_name(s.settings().condition)).c_str());
+    if (learn_ui::primary_button(ui, "Start the drills") || confirm_) ui.navigator.go_to(screen_for_phase(s.phase()));
+    confirm_ = false;
+    learn_ui::end_card();
+  }
+
+  AppServices& services_;
+  LearnFlow& flow_;
+  int frames_ = 0;
+  bool confirm_ = false;
+};
+
+const ScreenRegistration kReg{{"learn_diagnosis", "Trainer: analysis progress and per-skill diagnosis",
+                               [](AppServices& services) { return std::make_unique<LearnDiagnosisScreen>(services); }}};
+
+}  // namespace
+}  // namespace sc

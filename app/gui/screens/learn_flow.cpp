@@ -1,0 +1,103 @@
+#include "app/gui/screens/learn_flow.hpp"
+
+#include <filesystem>
+
+#include "app/gui/screens/learn_scripted_learner.hpp"
+#include "app/gui/screens/learn_task_kits.hpp"
+#include "engine/core/error.hpp"
+#include "teaching/records/data_dir.hpp"
+
+namespace sc {
+namespace {
+
+TimestampSource clock_of(const LearnFlow& flow) {
+  if (flow.headless_clock) return [] { return std::string("2024-05-01T12:00:00.000Z"); };
+  return records::utc_timestamp_now;
+}
+
+}  // namespace
+
+TaskKit& LearnFlow::kit(const AppServices& services) {
+  const std::string task(to_string(services.task));
+  if (!kit_ || kit_task_ != task) {
+    kit_ = make_trainer_kit(task);
+    kit_task_ = task;
+  }
+  return *kit_;
+}
+
+records::LearnerStore& LearnFlow::store(const AppServices& services) {
+  if (!store_) {
+    const std::filesystem::path dir =
+        services.options.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(services.options.data_dir);
+    store_ = std::make_unique<records::LearnerStore>(dir);
+  }
+  return *store_;
+}
+
+std::optional<records::ResumePoint> LearnFlow::unfinished(const AppServices& services) {
+  if (learner.empty()) return std::nullopt;
+  return store(services).find_unfinished_session(learner, std::string(to_string(services.task)));
+}
+
+void LearnFlow::start(const AppServices& services, bool resume) {
+  TaskKit& task_kit = kit(services);
+  records::LearnerStore& db = store(services);
+  if (resume) {
+    if (const auto point = unfinished(services)) {
+      session_ = TrainingSession::resume(task_kit, db, *point, clock_of(*this));
+      return;
+    }
+  }
+  SessionSettings settings;
+  settings.learner = learner;
+  settings.device = device_key(services.device);
+  settings.condition = research ? condition : StudyCondition::Adaptive;
+  settings.seed = services.seed;
+  session_ = std::make_unique<TrainingSession>(task_kit, db, settings, clock_of(*this));
+}
+
+LearnFlow& learn_flow(AppServices& services) {
+  if (!services.learn_flow) services.learn_flow = std::make_shared<LearnFlow>();
+  return *services.learn_flow;
+}
+
+const char* screen_for_phase(SessionPhase phase) {
+  switch (phase) {
+    case SessionPhase::Pretest:
+    case SessionPhase::Drills:
+    case SessionPhase::Evaluation: return "learn_trial";
+    case SessionPhase::Diagnosis: return "learn_diagnosis";
+    case SessionPhase::Summary: return "learn_summary";
+  }
+  return "learn_welcome";
+}
+
+std::string device_key(const DeviceChoice& device) {
+  switch (device.kind) {
+    case DeviceKind::gamepad: return "gamepad";
+    case DeviceKind::mouse_joystick: return "mouse-joystick";
+    case DeviceKind::keyboard: return "keyboard";
+    case DeviceKind::mouse_pen: return "mouse";
+  }
+  return "unknown";
+}
+
+LearnFlow& learn_flow_for_screenshot(AppServices& services, SessionPhase phase, int item) {
+  LearnFlow& flow = learn_flow(services);
+  if (flow.session()) return flow;
+  flow.learner = "Ada";
+  flow.headless_clock = true;
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("skillcoach-screenshot-" + std::string(to_string(services.task)));
+  std::filesystem::remove_all(dir);
+  services.options.data_dir = dir.string();
+  flow.start(services, false);
+  TrainingSession& s = *flow.session();
+  ScriptedRunHooks hooks;
+  hooks.stop = [phase, item](const TrainingSession& t) { return t.phase() == phase && t.item_index() >= item; };
+  play_scripted_round(s, hooks);
+  return flow;
+}
+
+}  // namespace sc

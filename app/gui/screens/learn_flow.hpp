@@ -1,0 +1,57 @@
+#pragma once
+// The trainer's state shared by its screens (learn_welcome -> learn_instructions -> learn_trial (pre-test)
+// -> learn_diagnosis -> learn_trial (demo + practice) -> learn_trial (evaluation) -> learn_summary): the
+// task kit, the learner database and the TrainingSession. Screens are recreated on every navigation; this
+// object lives in AppServices::learn_flow for the whole run.
+//
+// Headless screenshots have no learner: learn_flow_for_screenshot() builds a deterministic session (fixed
+// seed, fixed timestamps, scripted learner, a fresh database in a temporary directory) and plays it up to
+// the phase the screen shows, so every screen of the flow has a golden with real data.
+#include <memory>
+#include <string>
+
+#include "app/gui/app_services.hpp"
+#include "teaching/records/learner_store.hpp"
+#include "teaching/sessions/training_session.hpp"
+
+namespace sc {
+
+class LearnFlow {
+ public:
+  std::string learner;                                  // typed on the welcome screen
+  bool research = false;                                // Ctrl+Shift+R on the welcome screen
+  StudyCondition condition = StudyCondition::Adaptive;  // research mode may change it
+  std::string message;                                  // last problem to show (one line), empty if none
+
+  // The kit of the current task, built on first use (parking plans its pool once, then reads a cache).
+  TaskKit& kit(const AppServices& services);
+  records::LearnerStore& store(const AppServices& services);
+  TrainingSession* session() { return session_.get(); }
+
+  // Starts a new session, or resumes the learner's unfinished one of this task when `resume` is set.
+  void start(const AppServices& services, bool resume);
+  // The learner's unfinished session of the current task, if any (for the welcome screen's offer).
+  std::optional<records::ResumePoint> unfinished(const AppServices& services);
+
+  bool headless_clock = false;  // fixed timestamps (screenshots)
+
+ private:
+  std::string kit_task_;
+  std::unique_ptr<TaskKit> kit_;
+  std::unique_ptr<records::LearnerStore> store_;
+  std::unique_ptr<TrainingSession> session_;
+};
+
+LearnFlow& learn_flow(AppServices& services);
+
+// The screen that shows a session's current phase.
+const char* screen_for_phase(SessionPhase phase);
+
+// "keyboard", "mouse-joystick", "gamepad", "mouse" (the device column of the trials table).
+std::string device_key(const DeviceChoice& device);
+
+// For headless screenshots: a deterministic session played by the scripted learner until `phase` (item
+// `item` within it). Returns the flow (also stored in services.learn_flow).
+LearnFlow& learn_flow_for_screenshot(AppServices& services, SessionPhase phase, int item = 0);
+
+}  // namespace sc

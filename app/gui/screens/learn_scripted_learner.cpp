@@ -1,0 +1,96 @@
+#include "app/gui/screens/learn_scripted_learner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.hpp"
+#include "engine/core/rng.hpp"
+#include "engine/parking/parking_trial.hpp"
+#include "engine/writing/writing_trial.hpp"
+
+namespace sc {
+namespace {
+
+Json parking_attempt(const Json& reference, double skill, Rng& rng, const std::string& device) {
+  ParkingTrial trial = parse_parking_trial(reference, "scripted learner's reference");
+  for (ParkingAction& a : trial.actions) {
+    a[0] = std::clamp(a[0] * skill, -1.0, 1.0);
+    a[1] = std::clamp(a[1] + (1.0 - skill) * rng.uniform(-0.5, 0.5), -1.0, 1.0);
+  }
+  trial.states.clear();
+  trial.rewards.clear();
+  trial.success.reset();
+  trial.source = "learner";
+  trial.device = device;
+  return parking_trial_to_json(trial);
+}
+
+Json writing_attempt(const Json& reference, double skill, Rng& rng, const std::string& device) {
+  writing::WritingTrial trial = writing::parse_writing_trial(reference, "scripted learner's reference");
+  const double error = (1.0 - skill) * 6.0;
+  const double phase = rng.uniform(0.0, 6.283);
+  for (std::size_t i = 0; i < trial.points.size(); ++i) {
+    const double t = static_cast<double>(i) * 0.15 + phase;
+    trial.points[i].x += error * (0.6 + std::sin(t));
+    trial.points[i].y += error * std::cos(t * 0.7);
+  }
+  trial.score.reset();
+  trial.source = "learner";
+  trial.device = device;
+  return writing::writing_trial_json(trial);
+}
+
+}  // namespace
+
+Json scripted_attempt(const Json& reference, double skill, std::uint64_t seed, const std::string& device) {
+  skill = std::clamp(skill, 0.0, 1.0);
+  Rng rng(seed);
+  const std::string task = reference.value("task", "");
+  if (task == "parking") return parking_attempt(reference, skill, rng, device);
+  if (task == "writing") return writing_attempt(reference, skill, rng, device);
+  throw InputError("scripted learner", "cannot imitate a trial of task '" + task + "'");
+}
+
+}  // namespace sc
+
+namespace sc {
+namespace {
+
+std::uint64_t attempt_seed(const TrainingSession& s, int kind, int index) {
+  return Rng(s.settings().seed).fork(static_cast<std::uint64_t>(s.round() * 1000 + kind * 100 + index)).next_u64();
+}
+
+}  // namespace
+
+void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
+  const std::string device = s.settings().device;
+  int practice_done = 0;
+  while (s.phase() != SessionPhase::Summary && !(hooks.stop && hooks.stop(s))) {
+    switch (s.phase()) {
+      case SessionPhase::Pretest:
+      case SessionPhase::Evaluation: {
+        const bool pre = s.phase() == SessionPhase::Pretest;
+        const Json attempt =
+            scripted_attempt(s.test_expert_trial(), pre ? 0.6 : 0.85, attempt_seed(s, pre ? 0 : 3, s.item_index()), device);
+        const SubmittedTrial kept = s.submit_test_trial(attempt, {});
+        if (hooks.after_trial) hooks.after_trial(s, pre ? "pretest" : "eval", kept);
+        break;
+      }
+      case SessionPhase::Diagnosis: s.analyse(); break;
+      case SessionPhase::Drills: {
+        const int item = s.current_item();
+        const Json reference = s.kit().drill_trial(s.drill(item));
+        s.record_demo(item, reference, {});
+        const double skill = std::min(0.95, 0.7 + 0.05 * practice_done);
+        const SubmittedTrial kept =
+            s.submit_practice(scripted_attempt(reference, skill, attempt_seed(s, 2, s.item_index()), device), {});
+        ++practice_done;
+        if (hooks.after_trial) hooks.after_trial(s, "practice", kept);
+        break;
+      }
+      case SessionPhase::Summary: break;
+    }
+  }
+}
+
+}  // namespace sc

@@ -1,0 +1,36 @@
+#pragma once
+// A scripted learner for headless runs (`skillcoach learn`, the end-to-end and crash tests, the golden
+// screenshots of the trainer): it imitates a reference trial (the expert's, or a drill's) with a
+// deterministic, skill-dependent error, so sessions have realistic, reproducible data without a person.
+//   parking: the expert's actions with the steering scaled by `skill` and the throttle jittered by a seeded
+//            stream (states and rewards dropped: the kit re-simulates them, as for any recorded trial);
+//   writing: the gold pen path shifted and wobbled by (1 - skill) x 6 px.
+#include <cstdint>
+#include <string>
+
+#include "engine/core/json_file.hpp"
+
+namespace sc {
+
+// skill in [0, 1] (1 = the reference itself). `seed` varies the jitter between attempts.
+Json scripted_attempt(const Json& reference_trial, double skill, std::uint64_t seed, const std::string& device);
+
+}  // namespace sc
+
+#include <functional>
+
+#include "teaching/sessions/training_session.hpp"
+
+namespace sc {
+
+// The scripted learner's whole behaviour in a session: pre-test at skill 0.6, each practice attempt a
+// little better (0.7 rising to 0.95), evaluation at 0.85; a demo is recorded before each practice slot.
+// Plays until `stop(session)` is true or the round's summary is reached. `after_trial` runs after each
+// kept trial (the crash test prints there; the CLI may sleep to let a test kill it mid-session).
+struct ScriptedRunHooks {
+  std::function<bool(const TrainingSession&)> stop;  // optional
+  std::function<void(const TrainingSession&, const std::string& kind, const SubmittedTrial&)> after_trial;
+};
+void play_scripted_round(TrainingSession& session, const ScriptedRunHooks& hooks = {});
+
+}  // namespace sc

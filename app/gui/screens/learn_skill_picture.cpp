@@ -1,0 +1,66 @@
+#include "app/gui/screens/learn_skill_picture.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "engine/parking/parking_trial.hpp"
+#include "engine/parking_view/parking_path.hpp"
+#include "engine/writing/writing_trial.hpp"
+
+namespace sc {
+namespace {
+
+// Points of the whole trajectory and the index range of the segment within them.
+struct Polyline {
+  std::vector<ImVec2> points;
+  std::size_t first = 0, last = 0;
+};
+
+Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
+  Polyline out;
+  const std::string task = demo.trial.value("task", "");
+  if (task == "parking") {
+    const ParkingPath path = simulate_parking_path(parse_parking_trial(demo.trial, "expert trial"));
+    for (const auto& s : path.samples) out.points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
+    const std::size_t per_step = static_cast<std::size_t>(parking::kSubstepsPerAction);
+    out.first = static_cast<std::size_t>(segment.begin) * per_step;
+    out.last = static_cast<std::size_t>(segment.end) * per_step;
+  } else {
+    const writing::WritingTrial trial = writing::parse_writing_trial(demo.trial, "expert trial");
+    for (const auto& p : trial.points) out.points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+    // Writing steps are resampled pen steps; the segment's share of the pen path is close enough to show.
+    const double T = std::max(1, demo.steps.length());
+    out.first = static_cast<std::size_t>(segment.begin / T * static_cast<double>(out.points.size()));
+    out.last = static_cast<std::size_t>(segment.end / T * static_cast<double>(out.points.size()));
+  }
+  out.last = std::min(out.last, out.points.empty() ? 0 : out.points.size() - 1);
+  out.first = std::min(out.first, out.last);
+  return out;
+}
+
+}  // namespace
+
+void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& demo, const SkillSegment& segment,
+                        bool highlight) {
+  d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
+  const Polyline line = polyline_of(demo, segment);
+  if (line.points.size() < 2) return;
+  ImVec2 lo = line.points[0], hi = line.points[0];
+  for (const ImVec2& p : line.points) {
+    lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
+    hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
+  }
+  const float pad = 8.0f;
+  const float scale = std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x), (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
+  std::vector<ImVec2> mapped;
+  for (const ImVec2& p : line.points)
+    mapped.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,
+                        o.y + size.y * 0.5f + (p.y - (lo.y + hi.y) * 0.5f) * scale);
+  d.AddPolyline(mapped.data(), static_cast<int>(mapped.size()), IM_COL32(120, 130, 150, 90), ImDrawFlags_None, 2.0f);
+  const int n = static_cast<int>(line.last - line.first + 1);
+  const ImU32 color = highlight ? IM_COL32(255, 160, 90, 255) : IM_COL32(91, 155, 255, 255);
+  if (n >= 2) d.AddPolyline(mapped.data() + line.first, n, color, ImDrawFlags_None, 3.5f);
+  d.AddCircleFilled(mapped[line.last], 4.0f, color);
+}
+
+}  // namespace sc

@@ -1,0 +1,14 @@
+#pragma once
+// A small picture of one expert segment (the skill's example from the pool), drawn with ImGui into a box:
+// parking — the car's path over the segment's control steps (re-simulated at sub-step resolution), the
+// rest of the manoeuvre faint; writing — the pen path of the segment's share of the gold trajectory.
+#include <imgui.h>
+
+#include "teaching/sessions/session_analysis.hpp"
+
+namespace sc {
+
+void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertDemo& demo,
+                        const SkillSegment& segment, bool highlight);
+
+}  // namespace sc

@@ -1,0 +1,111 @@
+// The end of a round: pre-test vs final-test score, the improvement, how each skill changed, and a
+// before/after picture (the learner's first pre-test path and last final-test path over the expert's), with
+// "another adaptive round" (Adaptive) or "finish".
+#include <imgui.h>
+
+#include <memory>
+#include <string>
+
+#include "app/gui/navigator.hpp"
+#include "app/gui/screen.hpp"
+#include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_skill_picture.hpp"
+#include "app/gui/screens/learn_ui.hpp"
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+class LearnSummaryScreen final : public Screen {
+ public:
+  explicit LearnSummaryScreen(AppServices& services)
+      : flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Summary) : learn_flow(services)) {
+    if (flow_.session() && flow_.session()->phase() == SessionPhase::Summary) summary_ = flow_.session()->summary();
+  }
+
+  void update(const FrameInput& input, double) override { confirm_ = confirm_ || learn_ui::confirm_pressed(input); }
+
+  void draw(UiContext& ui) override {
+    TrainingSession* s = flow_.session();
+    if (!s || !summary_) {
+      ui.navigator.go_to("learn_welcome");
+      return;
+    }
+    const float sc = ui.ui_scale;
+    learn_ui::begin_card(ui, "learn_summary", 900.0f);
+    learn_ui::title(ui, "Your progress");
+    ImGui::Text("Pre-test score %s   ->   final test %s", learn_ui::reward_text(summary_->pretest_mean).c_str(),
+                learn_ui::reward_text(summary_->eval_mean).c_str());
+    ImGui::PushFont(ui.fonts.bold);
+    ImGui::Text("%s by %.3f (0 is the expert's result)", summary_->improvement >= 0 ? "Improved" : "Dropped",
+                std::abs(summary_->improvement));
+    ImGui::PopFont();
+    ImGui::TextDisabled("Round %d, %d practice trials.", summary_->round, summary_->practice_trials);
+    ImGui::Dummy(ImVec2(0, 6 * sc));
+    draw_before_after(ui, *s);
+    ImGui::Dummy(ImVec2(0, 6 * sc));
+    learn_ui::heading(ui, "Skills (mistake weight before -> after; 0 = none)");
+    if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp)) {
+      for (const SkillChange& c : summary_->skills) {
+        if (!c.seen) continue;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s%s", s->kit().describe_skill(c.skill).c_str(), c.targeted ? "  (drilled)" : "");
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f -> %.2f", c.before, c.after);
+        ImGui::TableNextColumn();
+        ImGui::TextColored(c.after >= c.before ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1.0f, 0.6f, 0.5f, 1), "%s",
+                           c.after > c.before ? "better" : c.after == c.before ? "same" : "worse");
+      }
+      ImGui::EndTable();
+    }
+    ImGui::Dummy(ImVec2(0, 6 * sc));
+    if (s->can_continue() && (learn_ui::primary_button(ui, "Another adaptive round") || confirm_)) {
+      try {
+        s->start_next_round();
+        ui.navigator.go_to(screen_for_phase(s->phase()));
+      } catch (const InputError& e) {
+        flow_.message = e.what();
+      }
+    }
+    if (ImGui::Button("Finish", ImVec2(-1, 40 * sc))) {
+      s->finish();
+      ui.navigator.go_to("start");
+    }
+    confirm_ = false;
+    learn_ui::end_card();
+  }
+
+ private:
+  // The first pre-test trial and the first final-test trial, each as the whole path, side by side.
+  void draw_before_after(UiContext& ui, TrainingSession& s) {
+    const float sc = ui.ui_scale;
+    const ImVec2 size(380 * sc, 150 * sc);
+    ImDrawList& d = *ImGui::GetWindowDrawList();
+    const auto picture = [&](const char* caption, const Json& trial) {
+      ImGui::BeginGroup();
+      ImGui::TextDisabled("%s", caption);
+      ExpertDemo demo;
+      demo.trial = trial;
+      demo.steps = s.kit().steps_of(trial);
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      draw_skill_picture(d, at, size, demo, {0, 0, demo.steps.length()}, false);
+      ImGui::Dummy(size);
+      ImGui::EndGroup();
+    };
+    if (s.pretest_trials().empty() || s.eval_trials(s.round()).empty()) return;
+    picture("Before: your first pre-test trial", s.pretest_trials().front());
+    ImGui::SameLine(0, 20 * sc);
+    picture("After: your first final-test trial", s.eval_trials(s.round()).front());
+  }
+
+  LearnFlow& flow_;
+  std::optional<RoundSummary> summary_;
+  bool confirm_ = false;
+};
+
+const ScreenRegistration kReg{{"learn_summary", "Trainer: round summary, before/after, another round",
+                               [](AppServices& services) { return std::make_unique<LearnSummaryScreen>(services); }}};
+
+}  // namespace
+}  // namespace sc

@@ -1,0 +1,313 @@
+// One trial of the trainer, whatever the phase: pre-test and evaluation (no help, countdown, time limit,
+// then the score), and drills (first a demo — the ghost car drives the drill while the stick gauge shows the
+// expert's inputs — then the learner practises with the ghost path and their own trail; score, then "try
+// again" or "next"). Every finished trial goes to the TrainingSession at once, which commits it to the
+// learner database. Esc / gamepad Start pauses; an unplugged gamepad pauses with a message until a device
+// is back, and the trial continues where it was (nothing is lost).
+#include <imgui.h>
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/gui/navigator.hpp"
+#include "app/gui/screen.hpp"
+#include "app/gui/screens/free_drive_input.hpp"
+#include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_ui.hpp"
+#include "engine/core/error.hpp"
+#include "engine/parking/parking_trial.hpp"
+#include "engine/parking_view/driving_gauges.hpp"
+#include "engine/parking_view/live_parking_drive.hpp"
+#include "engine/parking_view/parking_path.hpp"
+#include "engine/parking_view/parking_scene.hpp"
+
+namespace sc {
+namespace {
+
+constexpr double kCountdownSeconds = 3.0;
+constexpr int kHeadlessPreRollSteps = 8;
+
+enum class Stage { countdown, demo, driving, result };
+
+class LearnTrialScreen final : public Screen {
+ public:
+  explicit LearnTrialScreen(AppServices& services)
+      : services_(services),
+        flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Drills) : learn_flow(services)),
+        input_(services.device) {
+    if (!flow_.session()) return;
+    prepare();
+    if (services.headless) {  // screenshots: a practice run a few steps in, ghost and trail visible
+      stage_ = Stage::driving;
+      while (drive_->control_steps() < kHeadlessPreRollSteps && !drive_->done()) drive_->substep(expert_action());
+    }
+  }
+
+  void update(const FrameInput& frame, double dt) override {
+    if (!flow_.session() || services_.task != TaskKind::parking) return;
+    ticks_per_substep_ = std::max(1, static_cast<int>(std::lround(parking::kDt / dt)));
+    input_.update(frame);
+    confirm_ = confirm_ || learn_ui::confirm_pressed(frame);
+    if (input_.pause_toggled() && stage_ != Stage::result) paused_ = !paused_;
+    if (paused()) return;
+    stage_time_ += dt;
+    if (stage_ == Stage::countdown && stage_time_ >= kCountdownSeconds) set_stage(demo_pending_ ? Stage::demo : Stage::driving);
+    if (stage_ != Stage::demo && stage_ != Stage::driving) return;
+    if (++tick_ < ticks_per_substep_) return;
+    tick_ = 0;
+    drive_->substep(stage_ == Stage::demo ? expert_action() : input_.action());
+    const bool out_of_time = stage_ == Stage::driving && drive_->time_seconds() >= time_limit_;
+    if (drive_->done() || out_of_time || (stage_ == Stage::demo && demo_finished())) end_run();
+  }
+
+  void draw(UiContext& ui) override {
+    if (!flow_.session()) {
+      learn_ui::begin_card(ui, "learn_trial_none", 520.0f);
+      learn_ui::title(ui, "No session");
+      if (learn_ui::primary_button(ui, "Back to the welcome page")) ui.navigator.go_to("learn_welcome");
+      learn_ui::end_card();
+      return;
+    }
+    if (services_.task != TaskKind::parking) {
+      draw_writing_unavailable(ui);
+      return;
+    }
+    const float s = ui.ui_scale;
+    const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width), static_cast<float>(ui.height) - 56 * s};
+    draw_scene(ui, viewport);
+    draw_gauges(ui);
+    draw_header(ui);
+    if (stage_ == Stage::countdown) draw_countdown(ui);
+    if (paused()) draw_pause(ui);
+    if (stage_ == Stage::result) draw_result(ui);
+    confirm_ = false;
+  }
+
+ private:
+  TrainingSession& session() { return *flow_.session(); }
+
+  // Sets up the run for the session's current phase and item.
+  void prepare() {
+    TrainingSession& s = session();
+    if (services_.task != TaskKind::parking) return;
+    ghost_.reset();
+    demo_pending_ = false;
+    if (s.phase() == SessionPhase::Drills || retry_item_) {
+      item_ = retry_item_ ? *retry_item_ : s.current_item();
+      const ParkingTrial drill = parse_parking_trial(s.kit().drill_trial(s.drill(item_)), "drill");
+      scenario_ = drill.scenario;
+      expert_actions_ = drill.actions;
+      ghost_ = simulate_parking_path(drill);
+      time_limit_ = s.drill_time_limit(item_);
+      demo_pending_ = !retry_item_;
+    } else {
+      const ParkingTrial expert = parse_parking_trial(s.test_expert_trial(), "expert trial");
+      scenario_ = expert.scenario;
+      expert_actions_ = expert.actions;
+      time_limit_ = s.test_time_limit();
+    }
+    drive_ = std::make_unique<LiveParkingDrive>(scenario_);
+    started_ = records::utc_timestamp_now();
+    set_stage(Stage::countdown);
+  }
+
+  void set_stage(Stage stage) {
+    stage_ = stage;
+    stage_time_ = 0;
+    tick_ = 0;
+    if (stage == Stage::driving && drive_->control_steps() > 0) drive_ = std::make_unique<LiveParkingDrive>(scenario_);
+  }
+
+  bool paused() const { return paused_ || (stage_ == Stage::driving && input_.state() != DriveInputState::ready); }
+
+  input::DriveAction expert_action() const {
+    const auto k = static_cast<std::size_t>(drive_->control_steps());
+    if (k >= expert_actions_.size()) return {};
+    return {expert_actions_[k][0], expert_actions_[k][1]};
+  }
+  bool demo_finished() const { return static_cast<std::size_t>(drive_->control_steps()) >= expert_actions_.size(); }
+
+  void end_run() {
+    TrainingSession& s = session();
+    const std::string device = device_key(services_.device);
+    const Json trial = parking_trial_to_json(drive_->to_trial(stage_ == Stage::demo ? "expert" : "learner", device));
+    const TrialTimes times{started_, records::utc_timestamp_now()};
+    try {
+      if (stage_ == Stage::demo) {
+        note_ = s.record_demo(item_, trial, times).message;
+        demo_pending_ = false;
+        drive_ = std::make_unique<LiveParkingDrive>(scenario_);
+        set_stage(Stage::countdown);
+        return;
+      }
+      SubmittedTrial kept;
+      if (retry_item_)
+        kept = s.submit_extra_practice(*retry_item_, trial, times);
+      else if (s.phase() == SessionPhase::Drills)
+        kept = s.submit_practice(trial, times);
+      else
+        kept = s.submit_test_trial(trial, times);
+      last_reward_ = kept.reward;
+      note_ = kept.saved.message;
+      last_item_ = item_;
+      was_practice_ = retry_item_.has_value() || ghost_.has_value();
+    } catch (const InputError& e) {
+      note_ = e.what();
+    }
+    retry_item_.reset();
+    set_stage(Stage::result);
+  }
+
+  void next(UiContext& ui) {
+    TrainingSession& s = session();
+    if (s.phase() == SessionPhase::Pretest || s.phase() == SessionPhase::Drills || s.phase() == SessionPhase::Evaluation)
+      prepare();
+    else
+      ui.navigator.go_to(screen_for_phase(s.phase()));
+  }
+
+  void draw_scene(UiContext& ui, const PixelViewport& viewport) {
+    ParkingSceneView view;
+    view.layout = &drive_->layout();
+    view.goal = drive_->goal();
+    view.reverse_in = drive_->scenario().reverse_in;
+    const double within = paused() ? tick_ : tick_ + ui.alpha;
+    view.car = drive_->pose(drive_->done() ? 1.0 : std::clamp(within / ticks_per_substep_, 0.0, 1.0));
+    if (stage_ != Stage::demo) view.trail = drive_->trail();
+    if (ghost_) view.ghost_path = &*ghost_;
+    if (ghost_ && stage_ == Stage::driving) view.ghost_time = drive_->time_seconds();
+    ui.renderer.set_camera(parking_scene_camera(view, CameraMode::whole_lot, viewport));
+    paint_parking_scene(ui.renderer, view);
+  }
+
+  void draw_gauges(UiContext& ui) {
+    const float s = ui.ui_scale;
+    const GaugeLayout layout = layout_driving_gauges(
+        {static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 16.0f * s}, s);
+    input_.set_joystick_base({layout.stick.x, layout.stick.y}, layout.radius * 0.78f);
+    DrivingGaugeValues values;
+    values.speed = drive_->current().speed;
+    values.steering = drive_->steering();
+    if (stage_ == Stage::demo) {
+      values.stick = drive_->applied_action();
+      values.stick_caption = "expert's stick";
+    } else {
+      values.stick = input_.action();
+      values.stick_caption = "your stick";
+      values.stick_held = input_.stick_held();
+    }
+    draw_driving_gauges(*ImGui::GetBackgroundDrawList(), layout, values, s);
+  }
+
+  std::string phase_title() {
+    TrainingSession& s = session();
+    const auto count = [](int i, int n) { return std::to_string(i + 1) + " of " + std::to_string(n); };
+    if (stage_ == Stage::result && was_practice_) return "Practice";
+    switch (s.phase()) {
+      case SessionPhase::Pretest: return "Pre-test  " + count(s.item_index(), s.test_count());
+      case SessionPhase::Evaluation: return "Final test  " + count(s.item_index(), s.test_count());
+      case SessionPhase::Drills:
+        return std::string(stage_ == Stage::demo || demo_pending_ ? "Drill demo  " : "Drill practice  ") +
+               count(s.item_index(), s.practice_slot_count());
+      default: return "Trial";
+    }
+  }
+
+  void draw_header(UiContext& ui) {
+    const float s = ui.ui_scale;
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
+    ImGui::Begin("learn_trial_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
+    ImGui::PushFont(ui.fonts.bold);
+    ImGui::TextUnformatted(phase_title().c_str());
+    ImGui::PopFont();
+    ImGui::SameLine(0, 30 * s);
+    if (stage_ == Stage::driving)
+      ImGui::Text("Time left %.1f s", std::max(0.0, time_limit_ - drive_->time_seconds()));
+    else if (stage_ == Stage::demo)
+      ImGui::TextUnformatted("Watch the ghost car: the stick at the bottom right shows the expert's inputs.");
+    if (ghost_ && stage_ == Stage::driving) {
+      ImGui::SameLine(0, 30 * s);
+      ImGui::TextDisabled("Follow the blue band. Esc pauses.");
+    }
+    ImGui::End();
+  }
+
+  void draw_countdown(UiContext& ui) {
+    learn_ui::begin_card(ui, "learn_countdown", 360.0f, 0.3f);
+    learn_ui::title(ui, demo_pending_ ? "Demo starts in" : "Get ready");
+    ImGui::PushFont(ui.fonts.title);
+    ImGui::Text("%d", static_cast<int>(std::ceil(kCountdownSeconds - stage_time_)));
+    ImGui::PopFont();
+    learn_ui::end_card();
+  }
+
+  void draw_pause(UiContext& ui) {
+    learn_ui::begin_card(ui, "learn_pause", 480.0f, 0.3f);
+    learn_ui::title(ui, "Paused");
+    if (input_.state() != DriveInputState::ready)
+      ImGui::TextWrapped("%s", input_.status().c_str());
+    else
+      ImGui::TextUnformatted("Press Esc (or Start) to continue.");
+    learn_ui::end_card();
+  }
+
+  void draw_result(UiContext& ui) {
+    TrainingSession& s = session();
+    learn_ui::begin_card(ui, "learn_result", 460.0f, 0.3f);
+    learn_ui::title(ui, drive_->succeeded() ? "Parked!" : drive_->collided() ? "Bump!" : "Time is up");
+    ImGui::Text("Score %s  (0 is the expert's result)", learn_ui::reward_text(last_reward_).c_str());
+    if (!note_.empty()) learn_ui::muted_wrapped(note_.c_str());
+    if (was_practice_ && ImGui::Button("Try again", ImVec2(-1, 40 * ui.ui_scale))) {
+      retry_item_ = last_item_;
+      prepare();
+    } else if (learn_ui::primary_button(ui, s.phase() == SessionPhase::Drills || s.phase() == SessionPhase::Pretest ||
+                                                    s.phase() == SessionPhase::Evaluation
+                                                ? "Next"
+                                                : "Continue") ||
+               confirm_) {
+      next(ui);
+    }
+    learn_ui::end_card();
+  }
+
+  void draw_writing_unavailable(UiContext& ui) {
+    learn_ui::begin_card(ui, "learn_trial_writing", 560.0f);
+    learn_ui::title(ui, "Writing trials");
+    ImGui::TextWrapped("Writing trials in the window are not part of this build yet. The writing flow runs headless: "
+                       "skillcoach learn --task writing.");
+    if (learn_ui::primary_button(ui, "Back")) ui.navigator.go_to("start");
+    learn_ui::end_card();
+  }
+
+  AppServices& services_;
+  LearnFlow& flow_;
+  FreeDriveInput input_;
+  ParkingScenario scenario_;
+  std::vector<ParkingAction> expert_actions_;
+  std::optional<ParkingPath> ghost_;
+  std::unique_ptr<LiveParkingDrive> drive_;
+  Stage stage_ = Stage::countdown;
+  double stage_time_ = 0;
+  int tick_ = 0;
+  int ticks_per_substep_ = 4;
+  double time_limit_ = 20;
+  bool paused_ = false;
+  bool demo_pending_ = false;
+  bool confirm_ = false;
+  bool was_practice_ = false;
+  int item_ = 0;
+  int last_item_ = 0;
+  std::optional<int> retry_item_;
+  double last_reward_ = 0;
+  std::string note_;
+  std::string started_;
+};
+
+const ScreenRegistration kReg{{"learn_trial", "Trainer: pre-test, drill demo and practice, evaluation trial",
+                               [](AppServices& services) { return std::make_unique<LearnTrialScreen>(services); }}};
+
+}  // namespace
+}  // namespace sc

@@ -1,0 +1,146 @@
+// The trainer's first page: who is learning (a new name or a returning learner), an offer to resume an
+// unfinished session, and — hidden behind Ctrl+Shift+R — research mode, which picks the study condition so
+// the paper's study can be rerun with real people. Task and device come from the start screen.
+#include <imgui.h>
+
+#include <array>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "app/gui/navigator.hpp"
+#include "app/gui/screen.hpp"
+#include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_ui.hpp"
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+class LearnWelcomeScreen final : public Screen {
+ public:
+  explicit LearnWelcomeScreen(AppServices& services) : services_(services), flow_(learn_flow(services)) {
+    if (services.headless && flow_.learner.empty()) {
+      // Screenshots: a returning learner in a fresh temporary database, nothing unfinished.
+      flow_.learner = "Ada";
+      flow_.headless_clock = true;
+      services.options.data_dir = (std::filesystem::temp_directory_path() / "skillcoach-screenshot-welcome").string();
+      std::filesystem::remove_all(services.options.data_dir);
+      flow_.store(services).ensure_learner("Ada", "2024-05-01T12:00:00.000Z");
+    }
+    std::strncpy(name_.data(), flow_.learner.c_str(), name_.size() - 1);
+  }
+
+  void update(const FrameInput& input, double) override {
+    const bool ctrl = input.keys_down[SDL_SCANCODE_LCTRL] || input.keys_down[SDL_SCANCODE_RCTRL];
+    const bool shift = input.keys_down[SDL_SCANCODE_LSHIFT] || input.keys_down[SDL_SCANCODE_RSHIFT];
+    if (ctrl && shift && input.keys_pressed[SDL_SCANCODE_R]) flow_.research = !flow_.research;
+    confirm_ = confirm_ || learn_ui::confirm_pressed(input);
+  }
+
+  void draw(UiContext& ui) override {
+    learn_ui::begin_card(ui, "learn_welcome", 640.0f);
+    learn_ui::title(ui, services_.task == TaskKind::parking ? "Parking trainer" : "Writing trainer");
+    learn_ui::muted_wrapped(
+        "A short test shows what you can already do. SkillCoach then picks practice drills for the skills you "
+        "need most, and a final test shows how far you came.");
+    ImGui::Dummy(ImVec2(0, 8 * ui.ui_scale));
+    draw_name(ui);
+    draw_learners(ui);
+    if (flow_.research) draw_research(ui);
+    ImGui::Dummy(ImVec2(0, 8 * ui.ui_scale));
+    draw_start(ui);
+    if (!flow_.message.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.5f, 1.0f));
+      ImGui::TextWrapped("%s", flow_.message.c_str());
+      ImGui::PopStyleColor();
+    }
+    ImGui::Dummy(ImVec2(0, 4 * ui.ui_scale));
+    ImGui::TextDisabled("Device: %s", describe(services_.device).c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Change task or device")) ui.navigator.go_to("start");
+    learn_ui::end_card();
+  }
+
+ private:
+  void draw_name(UiContext& ui) {
+    learn_ui::heading(ui, "Your name");
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::InputText("##name", name_.data(), name_.size())) flow_.learner = name_.data();
+  }
+
+  void draw_learners(UiContext& ui) {
+    std::vector<records::LearnerOverview> learners;
+    try {
+      learners = flow_.store(services_).list_learners();
+    } catch (const InputError& e) {
+      flow_.message = e.what();
+      return;
+    }
+    if (learners.empty()) return;
+    ImGui::TextDisabled("Returning? Pick your name:");
+    for (const auto& l : learners) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(l.name.c_str())) {
+        flow_.learner = l.name;
+        std::strncpy(name_.data(), l.name.c_str(), name_.size() - 1);
+      }
+    }
+    (void)ui;
+  }
+
+  void draw_research(UiContext& ui) {
+    ImGui::Separator();
+    learn_ui::heading(ui, "Research mode: study condition");
+    for (StudyCondition c : kAllStudyConditions) {
+      const std::string label(condition_name(c));
+      if (ImGui::RadioButton(label.c_str(), flow_.condition == c)) flow_.condition = c;
+      if (c != StudyCondition::Drills && c != StudyCondition::Adaptive) ImGui::SameLine();
+    }
+  }
+
+  void draw_start(UiContext& ui) {
+    const bool named = !flow_.learner.empty();
+    std::optional<records::ResumePoint> unfinished;
+    try {
+      if (named) unfinished = flow_.unfinished(services_);
+    } catch (const InputError& e) {
+      flow_.message = e.what();
+    }
+    ImGui::BeginDisabled(!named);
+    if (unfinished) {
+      const auto& p = unfinished->session.progress;
+      ImGui::TextWrapped("Welcome back. Your last session stopped in round %d at %s (%d trials kept).", p.round,
+                         std::string(records::to_string(p.phase)).c_str(), unfinished->trials_done);
+      if (learn_ui::primary_button(ui, "Resume where I stopped") || (confirm_ && named)) begin(ui, true);
+      if (ImGui::Button("Start a new session", ImVec2(-1, 0))) begin(ui, false);
+    } else if (learn_ui::primary_button(ui, "Continue") || (confirm_ && named)) {
+      begin(ui, false);
+    }
+    ImGui::EndDisabled();
+    confirm_ = false;
+  }
+
+  void begin(UiContext& ui, bool resume) {
+    try {
+      flow_.message.clear();
+      flow_.start(services_, resume);
+      TrainingSession& s = *flow_.session();
+      const bool fresh = s.phase() == SessionPhase::Pretest && s.item_index() == 0;
+      ui.navigator.go_to(fresh ? "learn_instructions" : screen_for_phase(s.phase()));
+    } catch (const InputError& e) {
+      flow_.message = e.what();
+    }
+  }
+
+  AppServices& services_;
+  LearnFlow& flow_;
+  std::array<char, 64> name_{};
+  bool confirm_ = false;
+};
+
+const ScreenRegistration kReg{{"learn_welcome", "Trainer: welcome, learner name, resume",
+                               [](AppServices& services) { return std::make_unique<LearnWelcomeScreen>(services); }}};
+
+}  // namespace
+}  // namespace sc

@@ -1,0 +1,93 @@
+// Golden images of the 2D renderer on the offscreen backends.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdlib>
+#include <string>
+
+#include "engine/core/error.hpp"
+#include "engine/render/gl_context.hpp"
+#include "engine/render/renderer2d.hpp"
+#include "tests/render/primitives_scene.hpp"
+#include "tests/support/golden_image.hpp"
+
+namespace sc::test {
+namespace {
+
+TEST(RendererGolden, PrimitivesSceneMatchesGoldenOnSelectedBackend) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), kPrimitivesWidth, kPrimitivesHeight);
+  EXPECT_TRUE(matches_golden(render_primitives_scene(*context), "render/primitives"));
+}
+
+// Both offscreen backends rasterise with llvmpipe into the same framebuffer layout, so they must produce the
+// same image: the suite can run on Mesa with or without OSMesa.
+TEST(RendererGolden, OsmesaAndEglMatchTheSameGolden) {
+  RgbaImage osmesa_image, egl_image;
+  {
+    auto osmesa = create_offscreen_context(OffscreenBackend::osmesa, kPrimitivesWidth, kPrimitivesHeight);
+    osmesa_image = render_primitives_scene(*osmesa);
+  }
+  {
+    auto egl = create_offscreen_context(OffscreenBackend::egl, kPrimitivesWidth, kPrimitivesHeight);
+    egl_image = render_primitives_scene(*egl);
+  }
+  EXPECT_TRUE(matches_golden(osmesa_image, "render/primitives", {}, GoldenMode::compare_only));
+  EXPECT_TRUE(matches_golden(egl_image, "render/primitives", {}, GoldenMode::compare_only));
+}
+
+// Frames must not depend on what was drawn before: render the scene, wreck GL state, render again.
+TEST(RendererGolden, FrameStateIsResetEachFrame) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), kPrimitivesWidth, kPrimitivesHeight);
+  const RgbaImage first = render_primitives_scene(*context);
+  const GlFunctions& gl = context->gl();
+  gl.Enable(GL_SCISSOR_TEST);
+  gl.Scissor(0, 0, 10, 10);
+  gl.BlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_ONE);
+  gl.ColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
+  gl.Enable(GL_STENCIL_TEST);
+  gl.StencilFunc(GL_NEVER, 1, 0xFF);
+  gl.Enable(GL_CULL_FACE);
+  gl.Viewport(5, 5, 20, 20);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  const RgbaImage second = render_primitives_scene(*context);
+  const ImageDifference diff = compare_images(second, first, 0);
+  EXPECT_TRUE(diff.same_size);
+  EXPECT_EQ(diff.differing_pixels, 0u);
+}
+
+TEST(RendererGolden, SceneIsBatchedIntoFewDrawCalls) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 320, 200);
+  Renderer2D renderer(*context);
+  renderer.begin_frame(Color::hex(0));
+  for (int i = 0; i < 200; ++i) renderer.fill_circle({static_cast<float>(i), 50}, 3, Color::hex(0xffffff));
+  const std::array<Vec2f, 3> path{Vec2f{0, 0}, Vec2f{100, 100}, Vec2f{200, 0}};
+  renderer.ghost_ribbon(path, Stroke::pixels(8), Color::hex(0xffffff, 0.5f));
+  for (int i = 0; i < 200; ++i) renderer.fill_rect({{static_cast<float>(i), 150}, {2, 2}, 0}, Color::hex(0xff0000));
+  renderer.end_frame();
+  // 200 circles in one call, the ghost in its own, 200 rectangles in one more.
+  EXPECT_EQ(renderer.last_frame_stats().draw_calls, 3);
+  EXPECT_GT(renderer.last_frame_stats().vertices, 200 * 36);
+}
+
+TEST(RendererGolden, UnknownBackendVariableIsAnInputError) {
+  setenv("SKILLCOACH_GL", "vulkan", 1);
+  EXPECT_THROW(offscreen_backend_from_env(), InputError);
+  setenv("SKILLCOACH_GL", "egl", 1);
+  EXPECT_EQ(offscreen_backend_from_env(), OffscreenBackend::egl);
+  unsetenv("SKILLCOACH_GL");
+  EXPECT_EQ(offscreen_backend_from_env(), OffscreenBackend::osmesa);
+}
+
+TEST(RendererGolden, MissingShaderNamesTheFile) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 64, 64);
+  setenv("SKILLCOACH_SHADER_DIR", "/nonexistent/shaders", 1);
+  try {
+    Renderer2D renderer(*context);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/shaders/scene.vert"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sc::test
