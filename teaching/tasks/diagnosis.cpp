@@ -1,0 +1,84 @@
+#include "teaching/tasks/diagnosis.hpp"
+
+#include "engine/core/error.hpp"
+#include "teaching/drills/drill_builder.hpp"
+#include "teaching/drills/drill_plan_json.hpp"
+#include "teaching/expertise/expertise_json.hpp"
+#include "teaching/tasks/expert_demos.hpp"
+
+namespace sc {
+
+Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed) {
+  Diagnosis out;
+  std::vector<ExpertiseTrial> evidence;
+  const std::vector<ExpertDemo>& pool = kit.expert_pool();
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    const std::string where = "trial " + std::to_string(i);
+    const Json& trial = trials[i];
+    if (!trial.is_object() || !trial.contains("task") || trial.at("task") != kit.task())
+      throw InputError(where, "$.task: expected \"" + kit.task() + "\"");
+    if (!trial.contains("scenario")) throw InputError(where, "$.scenario: missing");
+    DiagnosedTrial d;
+    d.scenario = trial.at("scenario");
+    const Json expert = kit.expert_trial(d.scenario);
+    for (std::size_t k = 0; k < pool.size() && d.pool_index < 0; ++k)
+      if (pool[k].trial == expert) d.pool_index = static_cast<int>(k);
+    d.expert = d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].skills
+                                 : kit.extractor().extract(kit.steps_of(expert));
+    d.student = kit.extractor().extract(kit.steps_of(trial));
+    d.reward = kit.reward_of(trial);
+    evidence.push_back({static_cast<int>(i), d.expert, d.student, d.reward});
+    out.trials.push_back(std::move(d));
+  }
+  const CurriculumConfig config = kit.curriculum_config();
+  out.expertise = estimate_expertise(evidence, kit.extractor().num_skills(), config.drills.num_targets);
+  const DrillBuilder builder(demo_skills(pool), config.drills);
+  Rng rng(seed);
+  for (const DrillPlan& plan : builder.individualized(out.expertise, rng))
+    out.drills.push_back(kit.projector().project(plan));
+  return out;
+}
+
+Json segmentation_json(const Segmentation& segmentation) {
+  Json out = Json::array();
+  for (const SkillSegment& s : segmentation.segments)
+    out.push_back({{"skill", s.skill}, {"begin", s.begin}, {"end", s.end}});
+  return out;
+}
+
+Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
+  Json out = {{"task", kit.task()}, {"extractor", kit.extractor().name()}, {"extractor_notice", kit.extractor_notice()}};
+  Json trials = Json::array();
+  for (const DiagnosedTrial& t : diagnosis.trials)
+    trials.push_back({{"scenario", t.scenario},
+                      {"pool_index", t.pool_index},
+                      {"reward", t.reward},
+                      {"skills", segmentation_json(t.student)},
+                      {"expert_skills", segmentation_json(t.expert)}});
+  out["trials"] = std::move(trials);
+  out["expertise"] = expertise_to_json(diagnosis.expertise);
+  Json targets = Json::array();
+  for (int m : diagnosis.expertise.targets)
+    targets.push_back({{"skill", m},
+                       {"expertise", diagnosis.expertise.expertise[static_cast<std::size_t>(m)]},
+                       {"description", kit.describe_skill(m)}});
+  out["targets"] = std::move(targets);
+  Json drills = Json::array();
+  for (const PlayableDrill& d : diagnosis.drills) {
+    Json j = drill_plan_to_json(d.plan);
+    Json words = Json::array();
+    for (int m : d.plan.ngram) words.push_back(kit.describe_skill(m));
+    j["skills_described"] = std::move(words);
+    j["steps"] = d.steps.length();
+    j["success"] = d.success;
+    j["return"] = d.drill_return;
+    j["ghost_path"] = d.ghost_path;
+    j["segment_starts"] = d.segment_starts;
+    j["trial"] = kit.drill_trial(d);
+    drills.push_back(std::move(j));
+  }
+  out["drills"] = std::move(drills);
+  return out;
+}
+
+}  // namespace sc

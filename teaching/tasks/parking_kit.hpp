@@ -1,0 +1,79 @@
+#pragma once
+// TaskKit for car parking: the expert pool (ParkingExpert plans of random classic scenarios, cached in
+// assets/experts/parking_pool.json), drills re-simulated from their first segment's car state, rewards
+// as the reference's episode score (the last step's reward, <= 0).
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "teaching/sessions/task_kit.hpp"
+#include "teaching/tasks/parking_drill_projector.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
+#include "teaching/tasks/parking_skill_motion.hpp"
+
+namespace sc {
+
+inline constexpr int kParkingTimeSlices = 3;  // the paper's study: K = 3 for parking
+
+struct ParkingKitOptions {
+  // The cached pool; empty = generate in memory only. See default_parking_pool_file().
+  std::filesystem::path pool_file;
+  ParkingPoolOptions pool;
+};
+
+// asset_dir()/experts/parking_pool.json
+std::filesystem::path default_parking_pool_file();
+
+class ParkingKit final : public TaskKit {
+ public:
+  // Loads (or generates, see load_or_generate_parking_pool) the pool and segments it with `extractor`
+  // (any SkillExtractor: CompILE, or the time heuristic as a fallback). `extractor_notice` is passed
+  // through to extractor_notice().
+  ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
+             const ParkingKitOptions& options);
+  // With a ready pool (tests, tools): every trial needs control-rate actions and T+1 states.
+  ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
+             std::vector<ParkingTrial> pool);
+
+  std::string task() const override { return "parking"; }
+  const SkillExtractor& extractor() const override { return *extractor_; }
+  std::string extractor_notice() const override { return extractor_notice_; }
+  const std::vector<ExpertDemo>& expert_pool() const override { return demos_; }
+  const DrillProjector& projector() const override { return *projector_; }
+  CurriculumConfig curriculum_config() const override { return CurriculumConfig::parking(); }
+
+  StepSequence steps_of(const Json& trial) const override;
+  // The trial's last recorded reward; trials without rewards are re-simulated from their actions.
+  double reward_of(const Json& trial) const override;
+  // The pool's expert trial when the scenario is in the pool, else a fresh ParkingExpert plan.
+  Json expert_trial(const Json& scenario) const override;
+  // Classic scenarios drawn like the pool's (parking_pool_scenario(seed, i), i = 0, 1, ...), skipping
+  // any equal to one in `exclude` and duplicates. InputError for a malformed exclude entry.
+  std::vector<Json> fresh_scenarios(int count, std::uint64_t seed, const std::vector<Json>& exclude) const override;
+  std::string describe_skill(int skill) const override;
+  // Rule: twice the expert's driving time (0.2 s per control step) plus 5 s to read the scene, capped at
+  // the episode's 20 s horizon (ParkingSim ends the episode there anyway).
+  double time_limit_seconds(int expert_steps) const override;
+  Json drill_trial(const PlayableDrill& drill) const override;
+  // reward_of(attempt); InputError when the attempt was played in another scenario than the drill's.
+  double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
+
+  // What each skill does on the expert pool (describe_skill's source; tests find reversing skills here).
+  const std::vector<ParkingSkillMotion>& skill_motions() const { return motions_; }
+  // Why the pool was regenerated ("" when it was read from the file or given).
+  const std::string& pool_notice() const { return pool_notice_; }
+  const ParkingDrillProjector& parking_projector() const { return *projector_; }
+
+ private:
+  void build(std::vector<ParkingTrial> pool);
+
+  std::shared_ptr<const SkillExtractor> extractor_;
+  std::string extractor_notice_;
+  std::string pool_notice_;
+  std::vector<ExpertDemo> demos_;
+  std::vector<ParkingSkillMotion> motions_;
+  std::unique_ptr<ParkingDrillProjector> projector_;
+};
+
+}  // namespace sc

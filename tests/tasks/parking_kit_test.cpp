@@ -1,0 +1,128 @@
+#include "teaching/tasks/parking_kit.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+
+namespace sc {
+namespace {
+
+std::filesystem::path scratch(const std::string& name) {
+  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  std::filesystem::path p = std::filesystem::path(dir ? dir : ".") / "tasks" / name;
+  std::filesystem::create_directories(p.parent_path());
+  std::filesystem::remove(p);
+  return p;
+}
+
+std::shared_ptr<const SkillExtractor> time_slices() { return std::make_shared<TimeHeuristicExtractor>(3); }
+
+// Planning costs ~20-50 ms per scenario: one small pool shared by the tests of this file.
+const ParkingKit& kit() {
+  static const ParkingKit k(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}});
+  return k;
+}
+
+TEST(ParkingKit, PoolIsSegmentedByTheExtractorAndTheTimeHeuristic) {
+  ASSERT_EQ(kit().expert_pool().size(), 8u);
+  for (const ExpertDemo& d : kit().expert_pool()) {
+    EXPECT_EQ(d.steps.state_dim, 12);
+    EXPECT_GT(d.steps.length(), 3);
+    EXPECT_EQ(d.time_slices.segments.size(), 3u);  // K = 3
+    EXPECT_EQ(d.skills, TimeHeuristicExtractor(3).extract(d.steps));
+    EXPECT_LE(d.reward, 0.0);
+    EXPECT_TRUE(is_success_reward(d.reward)) << d.reward;  // the expert parks
+    EXPECT_EQ(d.trial.at("source"), "expert");
+  }
+}
+
+TEST(ParkingKit, SameSeedSamePoolOtherSeedOtherPool) {
+  const ParkingKit again(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}});
+  const ParkingKit other(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 4}});
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(again.expert_pool()[i].trial, kit().expert_pool()[i].trial);
+    EXPECT_NE(other.expert_pool()[i].scenario, kit().expert_pool()[i].scenario);
+  }
+}
+
+TEST(ParkingKit, PoolFileIsWrittenThenReadBackAndRegeneratedWhenCorrupt) {
+  const auto file = scratch("pool.json");
+  const ParkingPoolOptions options{3, 11};
+  const LoadedParkingPool first = load_or_generate_parking_pool(file, options);
+  EXPECT_NE(first.notice.find("missing; regenerated and saved"), std::string::npos) << first.notice;
+  ASSERT_TRUE(std::filesystem::exists(file));
+  const LoadedParkingPool second = load_or_generate_parking_pool(file, options);
+  EXPECT_EQ(second.notice, "");
+  ASSERT_EQ(second.trials.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(parking_trial_to_json(second.trials[i]), parking_trial_to_json(first.trials[i]));
+  // Another seed's file is not silently used.
+  EXPECT_THROW(parse_parking_pool(read_json_file(file), "pool.json", ParkingPoolOptions{3, 12}), InputError);
+  std::ofstream(file) << "{\"format\": ";
+  const LoadedParkingPool third = load_or_generate_parking_pool(file, options);
+  EXPECT_NE(third.notice.find("regenerated"), std::string::npos);
+  EXPECT_EQ(parking_trial_to_json(third.trials[2]), parking_trial_to_json(first.trials[2]));
+}
+
+TEST(ParkingKit, RewardIsTheLastStepRewardAndReSimulatedWhenAbsent) {
+  const Json& expert = kit().expert_pool()[0].trial;
+  const double recorded = expert.at("rewards").back().get<double>();
+  EXPECT_EQ(kit().reward_of(expert), recorded);
+  Json bare = expert;
+  bare.erase("rewards");
+  bare.erase("states");
+  EXPECT_NEAR(kit().reward_of(bare), recorded, 1e-12);
+  // A learner who does nothing stays where the episode started: a lower score, not parked.
+  Json idle = bare;
+  idle["actions"] = Json::array({Json::array({0.0, 0.0}), Json::array({0.0, 0.0})});
+  EXPECT_LT(kit().reward_of(idle), recorded);
+  EXPECT_FALSE(is_success_reward(kit().reward_of(idle)));
+}
+
+TEST(ParkingKit, FreshScenariosAreDeterministicDistinctAndExcludeTheGivenOnes) {
+  const std::vector<Json> first = kit().fresh_scenarios(4, 99, {});
+  ASSERT_EQ(first.size(), 4u);
+  EXPECT_EQ(kit().fresh_scenarios(4, 99, {}), first);
+  const std::vector<Json> exclude{first[0], first[2]};
+  const std::vector<Json> fresh = kit().fresh_scenarios(4, 99, exclude);
+  ASSERT_EQ(fresh.size(), 4u);
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    for (const Json& e : exclude) EXPECT_NE(fresh[i], e);
+    for (std::size_t j = 0; j < i; ++j) EXPECT_NE(fresh[i], fresh[j]);
+  }
+  EXPECT_EQ(fresh[0], first[1]);
+  EXPECT_EQ(fresh[1], first[3]);
+}
+
+TEST(ParkingKit, ExpertTrialComesFromThePoolOrThePlanner) {
+  const ExpertDemo& d = kit().expert_pool()[5];
+  EXPECT_EQ(kit().expert_trial(d.scenario), d.trial);
+  const Json fresh = kit().fresh_scenarios(1, 1234, {})[0];
+  const Json planned = kit().expert_trial(fresh);
+  EXPECT_EQ(planned.at("scenario"), fresh);
+  EXPECT_TRUE(is_success_reward(kit().reward_of(planned)));
+}
+
+TEST(ParkingKit, TimeLimitGrowsWithTheExpertsLengthUpToTheHorizon) {
+  EXPECT_DOUBLE_EQ(kit().time_limit_seconds(0), 5.0);
+  EXPECT_DOUBLE_EQ(kit().time_limit_seconds(17), 2 * 17 * 0.2 + 5.0);
+  EXPECT_DOUBLE_EQ(kit().time_limit_seconds(1000), 20.0);
+}
+
+TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {
+  ParkingSkillMotion reverse{10, -3.0, -0.8, -0.6, 1.0};
+  EXPECT_EQ(describe_parking_motion(reverse), "reversing while steering left");
+  ParkingSkillMotion forward{10, 4.0, -0.5, 0.05, 0.0};
+  EXPECT_EQ(describe_parking_motion(forward), "driving forward straight, braking");
+  EXPECT_EQ(describe_parking_motion(ParkingSkillMotion{}), "unused skill");
+  for (int m = 0; m < 3; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
+  EXPECT_EQ(kit().describe_skill(7), "unknown skill");
+}
+
+}  // namespace
+}  // namespace sc
