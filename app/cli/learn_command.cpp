@@ -1,0 +1,103 @@
+// skillcoach learn: a whole training session played headless by the scripted learner
+// (app/gui/screens/learn_scripted_learner.hpp) through the same TrainingSession orchestrator the trainer's
+// screens drive, storing every trial in the learner database as it ends. Resumes the learner's unfinished
+// session of the task when there is one. Used by the end-to-end and SIGKILL tests, and handy to fill a
+// database for the instructor review.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "app/cli/command_registry.hpp"
+#include "app/gui/screens/learn_scripted_learner.hpp"
+#include "app/gui/screens/learn_task_kits.hpp"
+#include "engine/core/error.hpp"
+#include "teaching/records/data_dir.hpp"
+#include "teaching/sessions/training_session.hpp"
+
+namespace sc::cli {
+namespace {
+
+struct LearnOptions {
+  std::string task = "parking";
+  std::string data_dir;
+  std::string learner = "scripted learner";
+  std::string condition = "adaptive";
+  std::string device = "keyboard";
+  int pretest = 5;
+  int eval = 5;
+  int rounds = 1;
+  unsigned long long seed = 20221128;
+  int trial_delay_ms = 0;
+};
+
+void print_trial(const TrainingSession& s, const std::string& kind, const SubmittedTrial& kept) {
+  std::printf("trial %s round %d reward %.4f %s\n", kind.c_str(), s.round(), kept.reward,
+              kept.saved.stored ? "kept" : ("pending: " + kept.saved.message).c_str());
+  std::fflush(stdout);
+}
+
+int run(const LearnOptions& o) {
+  const auto kit = make_trainer_kit(o.task);
+  if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
+  records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
+  std::unique_ptr<TrainingSession> session;
+  if (const auto point = store.find_unfinished_session(o.learner, kit->task())) {
+    session = TrainingSession::resume(*kit, store, *point, records::utc_timestamp_now);
+    std::printf("resumed session %lld at round %d, %s, item %d\n", static_cast<long long>(session->session_id()),
+                session->round(), std::string(records::to_string(session->phase())).c_str(), session->item_index());
+  } else {
+    SessionSettings settings;
+    settings.learner = o.learner;
+    settings.device = o.device;
+    settings.condition = parse_condition(o.condition);
+    settings.pretest_count = o.pretest;
+    settings.eval_count = o.eval;
+    settings.seed = o.seed;
+    session = std::make_unique<TrainingSession>(*kit, store, settings, records::utc_timestamp_now);
+    std::printf("started session %lld\n", static_cast<long long>(session->session_id()));
+  }
+  std::fflush(stdout);
+  ScriptedRunHooks hooks;
+  hooks.after_trial = [&](const TrainingSession& s, const std::string& kind, const SubmittedTrial& kept) {
+    print_trial(s, kind, kept);
+    if (o.trial_delay_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.trial_delay_ms));
+  };
+  while (true) {
+    play_scripted_round(*session, hooks);
+    const RoundSummary summary = session->summary();
+    std::printf("summary round %d pretest %.4f eval %.4f improvement %+.4f practice %d analysis %.3f s\n",
+                summary.round, summary.pretest_mean, summary.eval_mean, summary.improvement, summary.practice_trials,
+                session->last_analysis_seconds());
+    if (session->round() >= o.rounds || !session->can_continue()) break;
+    session->start_next_round();
+  }
+  session->finish();
+  std::printf("finished session %lld\n", static_cast<long long>(session->session_id()));
+  return 0;
+}
+
+CommandRunner setup(CLI::App& sub) {
+  auto o = std::make_shared<LearnOptions>();
+  sub.add_option("--task", o->task, "parking or writing")->capture_default_str();
+  sub.add_option("--data-dir", o->data_dir, "Directory of the learner database (default: XDG data directory)");
+  sub.add_option("--learner", o->learner, "Learner's name")->capture_default_str();
+  sub.add_option("--condition", o->condition, "Study condition (research mode)")->capture_default_str();
+  sub.add_option("--device", o->device, "Device recorded with the trials")->capture_default_str();
+  sub.add_option("--pretest", o->pretest, "Pre-test scenarios (N_s)")->capture_default_str();
+  sub.add_option("--eval", o->eval, "Evaluation scenarios per round")->capture_default_str();
+  sub.add_option("--rounds", o->rounds, "Adaptive rounds to play")->capture_default_str()->check(CLI::Range(1, 20));
+  sub.add_option("--seed", o->seed, "Session seed")->capture_default_str();
+  sub.add_option("--trial-delay-ms", o->trial_delay_ms, "Pause after each kept trial (crash tests)")
+      ->check(CLI::Range(0, 60000));
+  return [o] { return run(*o); };
+}
+
+const CommandRegistration kReg{{"learn", "Play a whole training session headless with a scripted learner",
+                                "skillcoach learn --task parking --data-dir /tmp/sc --learner ada", setup}};
+
+}  // namespace
+}  // namespace sc::cli

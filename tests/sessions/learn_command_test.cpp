@@ -1,0 +1,159 @@
+// End-to-end runs of the real program: `skillcoach learn` plays whole sessions of both tasks headless with
+// the scripted learner through the TrainingSession, and the learner database must hold every trial; one
+// run is killed with SIGKILL mid-session and must resume where it stopped without losing or duplicating a
+// finished trial.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "teaching/records/learner_store.hpp"
+
+namespace sc {
+namespace {
+
+namespace fs = std::filesystem;
+using records::TrialKind;
+
+std::string binary() {
+  const char* b = std::getenv("SKILLCOACH_BINARY");
+  return b ? b : "skillcoach";
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const char* out = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  fs::path dir = fs::path(out ? out : "/tmp") / ("learn_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Run {
+  int status = -1;
+  std::string output;
+};
+
+Run run(const std::string& args) {
+  Run r;
+  FILE* pipe = popen((binary() + " " + args + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  r.status = pclose(pipe);
+  return r;
+}
+
+long count_kind(const std::vector<records::StoredTrial>& trials, TrialKind kind) {
+  return std::count_if(trials.begin(), trials.end(), [kind](const auto& t) { return t.record.kind == kind; });
+}
+
+void expect_complete_session(const fs::path& dir, const std::string& learner, const std::string& task) {
+  records::LearnerStore store(dir);
+  const auto learners = store.list_learners();
+  ASSERT_EQ(learners.size(), 1u);
+  ASSERT_EQ(learners[0].sessions.size(), 1u);
+  const auto& summary = learners[0].sessions[0];
+  EXPECT_EQ(summary.session.learner, learner);
+  EXPECT_EQ(summary.session.task, task);
+  EXPECT_TRUE(summary.session.finished.has_value());
+  const auto trials = store.trials_of_session(summary.session.id);
+  EXPECT_EQ(count_kind(trials, TrialKind::Pretest), 3);
+  EXPECT_EQ(count_kind(trials, TrialKind::Eval), 2);
+  EXPECT_GE(count_kind(trials, TrialKind::Practice), 1);
+  EXPECT_EQ(count_kind(trials, TrialKind::Demo), count_kind(trials, TrialKind::Practice));
+  for (const auto& t : trials) {
+    EXPECT_EQ(t.record.task, task);
+    EXPECT_FALSE(t.record.trajectory_json.empty());
+    if (t.record.kind != TrialKind::Demo) {
+      ASSERT_TRUE(t.record.score.has_value());
+      EXPECT_LE(*t.record.score, 0.0);
+    }
+  }
+  EXPECT_EQ(store.diagnoses_of_session(summary.session.id).size(), 1u);
+  const auto curricula = store.curricula_of_session(summary.session.id);
+  ASSERT_EQ(curricula.size(), 1u);
+  EXPECT_EQ(curricula[0].condition, "adaptive");
+  EXPECT_TRUE(summary.pretest_mean.has_value());
+  EXPECT_TRUE(summary.eval_mean.has_value());
+}
+
+TEST(LearnCommand, ParkingSessionEndToEnd) {
+  const fs::path dir = fresh_dir("parking");
+  const Run r = run("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
+  expect_complete_session(dir, "e2e", "parking");
+}
+
+TEST(LearnCommand, WritingSessionEndToEnd) {
+  const fs::path dir = fresh_dir("writing");
+  const Run r = run("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
+  expect_complete_session(dir, "e2e", "writing");
+}
+
+// Starts `skillcoach learn` with a pause after every kept trial, reads its output until `kills_after`
+// trials were reported kept, and kills it with SIGKILL. Returns the number of trials it reported.
+int run_and_kill(const std::string& args, int kills_after) {
+  int out[2];
+  if (pipe(out) != 0) return -1;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(out[1], STDOUT_FILENO);
+    close(out[0]);
+    const std::string command = binary() + " " + args;
+    execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(out[1]);
+  FILE* stream = fdopen(out[0], "r");
+  int kept = 0;
+  char line[512];
+  while (kept < kills_after && fgets(line, sizeof line, stream))
+    if (std::string(line).rfind("trial ", 0) == 0 && std::string(line).find(" kept") != std::string::npos) ++kept;
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  fclose(stream);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+  return kept;
+}
+
+TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStopped) {
+  const fs::path dir = fresh_dir("sigkill");
+  const std::string args = "learn --task parking --pretest 3 --eval 2 --learner crash --data-dir " + dir.string();
+  const int reported = run_and_kill(args + " --trial-delay-ms 400", 5);  // 3 pre-test + 2 practice
+  ASSERT_EQ(reported, 5);
+  int stored = 0;
+  {
+    records::LearnerStore store(dir);
+    const auto point = store.find_unfinished_session("crash", "parking");
+    ASSERT_TRUE(point);
+    const auto trials = store.trials_of_session(point->session.id);
+    EXPECT_EQ(count_kind(trials, TrialKind::Pretest), 3);
+    EXPECT_GE(count_kind(trials, TrialKind::Practice), 2);
+    stored = static_cast<int>(count_kind(trials, TrialKind::Pretest) + count_kind(trials, TrialKind::Practice));
+    EXPECT_GE(stored, reported);  // every trial reported kept is there (one more may have ended before the kill)
+    // Practice trials were kept, so the session stopped in the drills (or just after them).
+    EXPECT_TRUE(point->session.progress.phase == records::SessionPhase::Drills ||
+                point->session.progress.phase == records::SessionPhase::Evaluation);
+  }
+  const Run resumed = run(args);
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("resumed session"), std::string::npos) << resumed.output;
+  expect_complete_session(dir, "crash", "parking");
+  records::LearnerStore store(dir);
+  const auto trials = store.trials_of_session(store.list_learners()[0].sessions[0].session.id);
+  for (std::size_t i = 0; i < trials.size(); ++i) EXPECT_EQ(trials[i].seq, static_cast<int>(i) + 1);
+}
+
+}  // namespace
+}  // namespace sc
