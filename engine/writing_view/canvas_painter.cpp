@@ -23,6 +23,14 @@ void paint_hops(Renderer2D& renderer, const std::vector<std::vector<Vec2f>>& hop
 
 }  // namespace
 
+Vec2f first_pen_down(std::span<const writing::TracePoint> path) {
+  if (path.empty()) return {};
+  std::size_t i = 1;
+  while (i < path.size() && !path[i].pen) ++i;
+  const writing::TracePoint& p = i < path.size() ? path[i - 1] : path.front();
+  return {static_cast<float>(p.x), static_cast<float>(p.y)};
+}
+
 void paint_paper(Renderer2D& renderer, const WritingCanvasLook& look) {
   const WorldRect visible = renderer.camera().visible_world();
   const Vec2f world_center{(visible.min_x + visible.max_x) * 0.5f, (visible.min_y + visible.max_y) * 0.5f};
@@ -70,11 +78,11 @@ void paint_drill_ribbon(Renderer2D& renderer, std::span<const writing::TracePoin
   for (const auto& run : paths.runs) renderer.ghost_ribbon(run, Stroke::world(look.ribbon_width), look.ribbon, round_path());
   for (const Vec2f dot : paths.dots) renderer.fill_circle(dot, look.ribbon_width * 0.5f, look.ribbon);
   paint_hops(renderer, paths.hops, look.ribbon_hop, 1.4f);
-  const ArrowHead head{look.arrow_length * 0.6f, look.arrow_length * 0.6f};
+  const ArrowHead head{look.arrow_length * 0.5f, look.arrow_length * 0.55f};
   for (const auto& run : paths.runs)
     for (const DirectionMark& mark : direction_marks(run, look.arrow_spacing, look.arrow_length))
-      renderer.arrow(mark.from, mark.to, Stroke::world(1.3f), head, look.arrow);
-  const Vec2f start{static_cast<float>(path.front().x), static_cast<float>(path.front().y)};
+      renderer.arrow(mark.from, mark.to, Stroke::world(look.arrow_length * 0.14f), head, look.arrow);
+  const Vec2f start = first_pen_down(path);
   renderer.fill_circle(start, look.start_dot_radius, look.start_dot);
   renderer.outline_circle(start, look.start_dot_radius, Stroke::world(1.2f), Color::hex(0xffffff, 0.9f));
 }

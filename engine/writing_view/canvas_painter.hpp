@@ -36,9 +36,9 @@ struct WritingCanvasLook {
   Color ribbon = Color::hex(0x2f7de1, 0.26f);  // a drill's ghost path
   float ribbon_width = 12.0f;
   Color ribbon_hop = Color::hex(0x2f7de1, 0.55f);
-  Color arrow = Color::hex(0x1d5fc0, 0.85f);
+  Color arrow = Color::hex(0x0f4fb0, 0.9f);
   float arrow_spacing = 45.0f;
-  float arrow_length = 9.0f;
+  float arrow_length = 13.0f;
   Color start_dot = Color::hex(0x23a35a);
   float start_dot_radius = 5.5f;
 
@@ -61,9 +61,14 @@ void paint_ink(Renderer2D& renderer, std::span<const writing::TracePoint> trace,
 void paint_learner_ink(Renderer2D& renderer, std::span<const writing::TracePoint> trace,
                        const WritingCanvasLook& look = {});
 
+// Where the ink of a path begins: the start of its first pen-down segment (the path's first point when it
+// has no ink). (0, 0) for an empty path.
+Vec2f first_pen_down(std::span<const writing::TracePoint> path);
+
 // A path to follow (a drill, or the whole gold word as an overlay): a translucent ribbon over its ink (even
 // where it crosses itself), dashed hops for its pen-up moves, direction arrows every look.arrow_spacing and a
-// dot where it starts.
+// dot where the pen first goes down (a full-alphabet character begins with a pen-up move from where the
+// previous symbol ended: the dot marks where to start writing, the dashed hop how the pen gets there).
 void paint_drill_ribbon(Renderer2D& renderer, std::span<const writing::TracePoint> path,
                         const WritingCanvasLook& look = {});
 

@@ -17,6 +17,8 @@ namespace sc::writing_view {
 
 // 0..100, rounded: 100 * (score + 1).
 int score_points(double score);
+// The score rounded to 3 decimals, without a negative zero (a perfect trace shows 0.000, not -0.000).
+double rounded_score(double score);
 // "87 points"
 std::string score_headline(const writing::WritingScore& score);
 // "score -0.134 · recall 0.91 · precision 0.95"

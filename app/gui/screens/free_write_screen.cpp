@@ -36,7 +36,7 @@ class FreeWriteScreen final : public Screen {
   explicit FreeWriteScreen(AppServices& services) : services_(services) {
     try {
       session_.emplace(services.seed);
-      if (services_.headless) session_->write_scripted({services.seed, 2.5, 4, 1.0});
+      if (services_.headless) session_->write_scripted({services.seed, 4.0, 4, 1.0});
     } catch (const InputError& error) {
       error_ = error.what();  // e.g. missing stroke data: say so on screen instead of crashing the app
     }
@@ -103,7 +103,6 @@ class FreeWriteScreen final : public Screen {
   }
 
   void draw_panel(UiContext& ui, float width) {
-    const float s = ui.ui_scale;
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, static_cast<float>(ui.height)), ImGuiCond_Always);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -112,17 +111,17 @@ class FreeWriteScreen final : public Screen {
     ImGui::PushFont(ui.fonts.heading);
     ImGui::TextUnformatted("Free writing");
     ImGui::PopFont();
+    ImGui::SameLine(ImGui::GetContentRegionMax().x - ImGui::CalcTextSize("Back").x -
+                    2.0f * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::Button("Back")) ui.navigator.back();
     if (!session_) {
       ImGui::TextWrapped("The writing task cannot start: %s", error_.c_str());
     } else {
       draw_word_choice(ui);
-      ImGui::Dummy(ImVec2(0, 6.0f * s));
+      ImGui::Separator();
       draw_trial_controls(ui);
-      ImGui::Dummy(ImVec2(0, 6.0f * s));
       draw_result(ui);
     }
-    ImGui::SetCursorPosY(static_cast<float>(ui.height) - ImGui::GetFrameHeightWithSpacing() - ImGui::GetStyle().WindowPadding.y);
-    if (ImGui::Button("Back", ImVec2(-1, 0))) ui.navigator.back();
     ImGui::End();
   }
 
@@ -166,9 +165,9 @@ class FreeWriteScreen final : public Screen {
   void draw_trial_controls(UiContext& ui) {
     writing_view::CanvasPenInput& pen = session_->pen();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%s", free_write_instructions(session_->scenario().alphabet));
+    ImGui::TextWrapped("%s Time limit: %.0f s from the first touch.", free_write_instructions(session_->scenario().alphabet),
+                       pen.rules().time_limit_seconds);
     ImGui::PopStyleColor();
-    ImGui::TextDisabled("Time limit %.0f s from the first touch", pen.rules().time_limit_seconds);
     const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
     ImGui::BeginDisabled(!pen.started());
     if (ImGui::Button("Done (Enter)", ImVec2(half, 0))) pen.done(ui.input.time_seconds);
@@ -191,12 +190,13 @@ class FreeWriteScreen final : public Screen {
     ImGui::PushFont(ui.fonts.heading);
     ImGui::TextUnformatted(writing_view::score_headline(result->score).c_str());
     ImGui::PopFont();
-    ImGui::Text("Score %.3f (0 is perfect, -1 missed)", result->score.score);
-    ImGui::Text("Recall %.2f: how much of the word you wrote", result->score.recall);
-    ImGui::Text("Precision %.2f: how much of your ink is on it", result->score.precision);
-    ImGui::TextDisabled("Ink %.0f px (gold %.0f px), %.1f s, %s", result->score.learner_ink_px,
-                        result->score.gold_ink_px, result->seconds, trial_end_text(result->end));
-    ImGui::TextDisabled("Write again to try to beat it.");
+    ImGui::TextWrapped("Score %.3f (0 is perfect)", writing_view::rounded_score(result->score.score));
+    ImGui::TextWrapped("Recall %.2f: the word you wrote", result->score.recall);
+    ImGui::TextWrapped("Precision %.2f: your ink on the word", result->score.precision);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("Ink %.0f of %.0f px, %.1f s, %s.", result->score.learner_ink_px, result->score.gold_ink_px,
+                       result->seconds, trial_end_text(result->end));
+    ImGui::PopStyleColor();
   }
 
   AppServices& services_;
