@@ -24,7 +24,8 @@ int score_points(double score) {
 double rounded_score(double score) { return std::round(score * 1000.0) / 1000.0 + 0.0; }
 
 std::string score_headline(const writing::WritingScore& score) {
-  return std::to_string(score_points(score.score)) + " points";
+  const int points = score_points(score.score);
+  return std::to_string(points) + (points == 1 ? " point" : " points");
 }
 
 std::string score_details(const writing::WritingScore& score) {

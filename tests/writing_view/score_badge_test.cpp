@@ -18,6 +18,8 @@ TEST(ScoreBadge, PointsAreTheScoreWithAPositiveOffset) {
   score.precision = 0.952;
   EXPECT_EQ(score_headline(score), "87 points");
   EXPECT_EQ(score_details(score), "score -0.134 \xc2\xb7 recall 0.91 \xc2\xb7 precision 0.95");
+  score.score = -0.993;
+  EXPECT_EQ(score_headline(score), "1 point");
 }
 
 TEST(ScoreBadge, APerfectScoreNeverPrintsANegativeZero) {
