@@ -76,9 +76,9 @@ void draw_speed_gauge(ImDrawList& dl, ImVec2 c, float radius, double speed, floa
   dl.AddLine(c, polar(c, track, angle), kNeedle, 2.5f * s);
   dl.AddCircleFilled(c, 4.0f * s, kNeedle, 12);
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f m/s", std::fabs(value) < 0.05 ? 0.0 : value);
-  text_centered(dl, {c.x, c.y + radius * 0.45f}, text, kText, 0.8f);
-  if (value < -0.05) text_centered(dl, {c.x, c.y - radius * 0.35f}, "R", kReverse, 0.9f);
+  const bool reversing = value < -0.05;
+  std::snprintf(text, sizeof text, reversing ? "R %.1f m/s" : "%.1f m/s", std::fabs(value) < 0.05 ? 0.0 : std::fabs(value));
+  text_centered(dl, {c.x, c.y + radius * 0.5f}, text, reversing ? kReverse : kText, 0.75f);
   caption_below(dl, c, radius, "speed", s);
 }
 
@@ -88,18 +88,14 @@ void draw_steering_gauge(ImDrawList& dl, ImVec2 c, float radius, double steering
   const double value = std::isfinite(steering) ? std::clamp(steering, -max, max) : 0.0;
   // The wheel turns twice the wheel angle (full lock = a quarter turn) so small corrections stay visible.
   const float turn = static_cast<float>(2.0 * value);
-  const float rim = radius * 0.66f;
-  dl.AddCircle(c, rim, kText, 40, 4.0f * s);
-  for (float spoke : {0.0f, kPi, 0.5f * kPi}) dl.AddLine(c, polar(c, rim, spoke + turn), kText, 3.0f * s);
-  dl.AddCircleFilled(polar(c, rim, -0.5f * kPi + turn), 4.0f * s, kNeedle, 12);  // top-of-wheel mark
-  // Lock bar under the wheel: how much of the full 45 degrees is used, left or right.
-  const float bar_y = c.y + radius * 0.84f, half = radius * 0.6f;
-  dl.AddLine({c.x - half, bar_y}, {c.x + half, bar_y}, kDialTrack, 4.0f * s);
-  const float f = static_cast<float>(value / max);
-  if (std::fabs(f) > 1e-3f) dl.AddLine({c.x, bar_y}, {c.x + f * half, bar_y}, kNeedle, 4.0f * s);
+  const float rim = radius * 0.5f;
+  const ImVec2 hub{c.x, c.y - radius * 0.14f};
+  dl.AddCircle(hub, rim, kText, 40, 4.0f * s);
+  for (float spoke : {0.0f, kPi, 0.5f * kPi}) dl.AddLine(hub, polar(hub, rim, spoke + turn), kText, 3.0f * s);
+  dl.AddCircleFilled(polar(hub, rim, -0.5f * kPi + turn), 4.0f * s, kNeedle, 12);  // top-of-wheel mark
   char text[32];
   std::snprintf(text, sizeof text, "%+.0f°", value * 180.0 / std::numbers::pi);
-  text_centered(dl, {c.x, c.y}, text, kText, 0.75f);
+  text_centered(dl, {c.x, c.y + radius * 0.62f}, text, kText, 0.75f);
   caption_below(dl, c, radius, "steering", s);
 }
 
@@ -115,7 +111,9 @@ void draw_stick_gauge(ImDrawList& dl, ImVec2 c, float radius, const input::Drive
   const float knob_radius = radius * (held ? 0.3f : 0.26f);
   dl.AddCircleFilled(knob, knob_radius, held ? kNeedle : kForward, 24);
   dl.AddCircle(knob, knob_radius, kText, 24, 1.5f * s);
-  text_centered(dl, {c.x, c.y - radius * 0.9f + 6.0f * s}, "fwd", kCaption, 0.6f);
+  // A small notch at the top of the base: pushing the knob that way drives forward.
+  const float top = c.y - radius * 0.94f;
+  dl.AddTriangleFilled({c.x, top}, {c.x - 5.0f * s, top + 7.0f * s}, {c.x + 5.0f * s, top + 7.0f * s}, kCaption);
   caption_below(dl, c, radius, caption.c_str(), s);
 }
 

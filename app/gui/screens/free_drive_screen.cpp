@@ -136,6 +136,10 @@ class FreeDriveScreen final : public Screen {
       values.stick_held = input_.stick_held();
     }
     draw_driving_gauges(*ImGui::GetBackgroundDrawList(), layout, values, ui.ui_scale);
+    // How to drive, left of the gauges.
+    const float s = ui.ui_scale;
+    ImGui::GetBackgroundDrawList()->AddText({kPanelWidth * s + 20.0f * s, layout.min.y + 16.0f * s},
+                                            IM_COL32(160, 168, 184, 255), controls_hint());
   }
 
   void draw_panel(UiContext& ui, float width) {
@@ -252,6 +256,17 @@ class FreeDriveScreen final : public Screen {
     ImGui::TextUnformatted(detail.c_str());
     ImGui::End();
     ImGui::PopStyleVar();
+  }
+
+  const char* controls_hint() const {
+    if (expert_driving_) return "The expert drives: watch its stick.\nEsc pauses.";
+    switch (services_.device.kind) {
+      case DeviceKind::gamepad: return "Left stick: steer, up to drive, down to brake/reverse.\nStart pauses.";
+      case DeviceKind::keyboard: return "Arrows or WASD: up drives, down brakes/reverses.\nEsc pauses.";
+      case DeviceKind::mouse_joystick: return "Drag the stick at the right: up drives, down reverses.\nEsc pauses.";
+      case DeviceKind::mouse_pen: break;
+    }
+    return "Esc pauses.";
   }
 
   std::string format_return() const {
