@@ -37,7 +37,10 @@ void write_json_file(const std::filesystem::path& file, const Json& doc, int ind
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(file.string(), "cannot be written");
-    out << doc.dump(indent) << '\n';
+    // Strings that did not come from JSON (SQLite text of a damaged database, device names) may hold
+    // invalid UTF-8; the default dump() then throws and the whole document (an export, a spill file of
+    // pending trials) would be lost. Such bytes become U+FFFD instead (found by tests/fuzz).
+    out << doc.dump(indent, ' ', false, Json::error_handler_t::replace) << '\n';
     out.flush();
     if (!out) throw InputError(file.string(), "write failed (disk full?)");
   }
