@@ -4,12 +4,29 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/json_file.hpp"
 #include "engine/writing/glyph.hpp"
 #include "engine/writing/stroke_file.hpp"
+#include "teaching/records/records_export.hpp"
 
 namespace {
+
+std::string read_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::filesystem::path scratch(const char* name) {
+  auto dir = std::filesystem::path(std::getenv("SKILLCOACH_TEST_OUTPUT")) / "fuzz_regressions" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
 
 std::filesystem::path regression(const char* target, const char* name) {
   return std::filesystem::path(std::getenv("SKILLCOACH_TEST_DATA")) / "fuzz" / "regressions" / target / name;
@@ -28,6 +45,26 @@ TEST(FuzzRegressions, ClassicGlyphRefusesAStrokeWithOneWildSample) {
 TEST(FuzzRegressions, ClassicGlyphRefusesASubnormalWidth) {
   const auto drawing = sc::writing::parse_stroke_text("START\n0,0,0\n2.5e-308,0,10\nBREAK\n", "tiny.txt");
   EXPECT_THROW(sc::writing::classic_glyph('a', drawing, "tiny"), sc::InputError);
+}
+
+// A learner database whose text column holds a byte that is not UTF-8 (0xC5 alone): the export threw
+// nlohmann's type_error 316 from dump(), an uncaught non-InputError that lost the whole export (and left
+// "<out>.tmp" behind). write_json_file now writes such bytes as U+FFFD.
+TEST(FuzzRegressions, ExportOfADatabaseWithInvalidUtf8TextSucceeds) {
+  const auto dir = scratch("invalid_utf8");
+  const std::string input = read_bytes(regression("learner_database", "invalid_utf8_in_text_column.db"));
+  ASSERT_GT(input.size(), 1u);
+  std::ofstream(dir / "skillcoach.db", std::ios::binary) << input.substr(1);  // byte 0 selects the mode
+  const auto out = dir / "export.json";
+  EXPECT_NO_THROW(sc::records::export_database(dir, out));
+  EXPECT_NE(read_bytes(out).find("\xEF\xBF\xBD"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "export.json.tmp"));
+}
+
+TEST(FuzzRegressions, JsonFilesReplaceInvalidUtf8InsteadOfThrowing) {
+  const auto file = scratch("utf8") / "doc.json";
+  sc::write_json_file(file, sc::Json{{"device", std::string("pad\xC5")}});
+  EXPECT_EQ(sc::read_json_file(file).at("device").get<std::string>(), "pad\xEF\xBF\xBD");
 }
 
 }  // namespace
