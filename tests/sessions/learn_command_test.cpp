@@ -35,13 +35,13 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-struct Run {
+struct CommandRun {
   int status = -1;
   std::string output;
 };
 
-Run run(const std::string& args) {
-  Run r;
+CommandRun run(const std::string& args) {
+  CommandRun r;
   FILE* pipe = popen((binary() + " " + args + " 2>&1").c_str(), "r");
   if (!pipe) return r;
   char buffer[512];
@@ -86,7 +86,7 @@ void expect_complete_session(const fs::path& dir, const std::string& learner, co
 
 TEST(LearnCommand, ParkingSessionEndToEnd) {
   const fs::path dir = fresh_dir("parking");
-  const Run r = run("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  const CommandRun r = run("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "parking");
@@ -94,7 +94,7 @@ TEST(LearnCommand, ParkingSessionEndToEnd) {
 
 TEST(LearnCommand, WritingSessionEndToEnd) {
   const fs::path dir = fresh_dir("writing");
-  const Run r = run("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  const CommandRun r = run("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "writing");
@@ -146,7 +146,7 @@ TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStop
     EXPECT_TRUE(point->session.progress.phase == records::SessionPhase::Drills ||
                 point->session.progress.phase == records::SessionPhase::Evaluation);
   }
-  const Run resumed = run(args);
+  const CommandRun resumed = run(args);
   ASSERT_EQ(resumed.status, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resumed session"), std::string::npos) << resumed.output;
   expect_complete_session(dir, "crash", "parking");
