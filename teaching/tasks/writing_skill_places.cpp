@@ -64,10 +64,17 @@ std::string describe_writing_place(const WritingSkillPlace& place) {
     if (a.first != b.first) return a.first > b.first;
     return a.second < b.second;
   });
-  std::string words = part_words(ranked[0].second.first, ranked[0].second.second);
-  if (ranked.size() > 1 && ranked[0].first < kDominantShare * place.steps)
-    words += " and " + part_words(ranked[1].second.first, ranked[1].second.second);
-  return words;
+  const auto [symbol, part] = ranked[0].second;
+  if (ranked.size() < 2 || ranked[0].first >= kDominantShare * place.steps) return part_words(symbol, part);
+  const auto [symbol2, part2] = ranked[1].second;
+  if (symbol2 == symbol && !writing::is_connector(symbol)) {
+    // Two thirds of one character: "the start and middle of 'a'", in writing order.
+    static const char* const kNames[] = {"start", "middle", "end"};
+    const int a = std::min(static_cast<int>(part), static_cast<int>(part2));
+    const int b = std::max(static_cast<int>(part), static_cast<int>(part2));
+    return std::string("the ") + kNames[a] + " and " + kNames[b] + " of '" + symbol + "'";
+  }
+  return part_words(symbol, part) + " and " + part_words(symbol2, part2);
 }
 
 }  // namespace sc

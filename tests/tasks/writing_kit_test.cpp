@@ -65,7 +65,7 @@ TEST(WritingKit, SkillWordsNameCharactersFromTheTrueBoundaries) {
   Segmentation seg{{{0, 0, 3}, {1, 3, 10}, {2, 10, 30}}};
   const auto places = writing_skill_places({word}, {seg}, 3);
   EXPECT_EQ(describe_writing_place(places[0]), "the start of 'a'");
-  EXPECT_EQ(describe_writing_place(places[1]), "the middle of 'a' and the end of 'a'");
+  EXPECT_EQ(describe_writing_place(places[1]), "the middle and end of 'a'");
   EXPECT_DOUBLE_EQ(places[2].share_of('b'), 1.0);
   EXPECT_EQ(describe_writing_place(WritingSkillPlace{}), "unused skill");
   for (int m = 0; m < 8; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");

@@ -1,0 +1,141 @@
+// skillcoach diagnose --task T [--model FILE] TRIAL.json...: the learner's skills, expertise (Alg. 2),
+// weakest skills and individualized drills (Alg. 3) as JSON; --png DIR also draws each drill's ghost path.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/cli/command_registry.hpp"
+#include "engine/core/asset_paths.hpp"
+#include "engine/core/error.hpp"
+#include "engine/core/json_file.hpp"
+#include "engine/parking_view/parking_path.hpp"
+#include "engine/parking_view/parking_trial_image.hpp"
+#include "engine/render/gl_context.hpp"
+#include "engine/render/rgba_image.hpp"
+#include "engine/writing_view/writing_trial_image.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/diagnosis.hpp"
+#include "teaching/tasks/parking_kit.hpp"
+#include "teaching/tasks/writing_drill_projector.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+
+namespace sc::cli {
+namespace {
+
+struct DiagnoseArgs {
+  std::string task;
+  std::string model;
+  std::string png_dir;
+  std::string out;
+  unsigned long long seed = 0;
+  std::vector<std::string> trials;
+};
+
+struct LoadedExtractor {
+  std::shared_ptr<const SkillExtractor> extractor;
+  std::string notice;
+};
+
+// --model must load (the user asked for it); the default model falls back to the time heuristic with a
+// notice, so a fresh checkout without trained models still diagnoses.
+LoadedExtractor load_extractor(const DiagnoseArgs& args) {
+  const int k = args.task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
+  if (!args.model.empty())
+    return {std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, args.task)), ""};
+  const std::filesystem::path model = asset_dir() / "models" / (args.task + ".pt");
+  try {
+    if (!std::filesystem::exists(model)) throw InputError(model.string(), "missing");
+    return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, args.task)), ""};
+  } catch (const InputError& e) {
+    return {std::make_shared<TimeHeuristicExtractor>(k), std::string(e.what()) + "; using the time heuristic"};
+  }
+}
+
+std::unique_ptr<TaskKit> make_kit(const DiagnoseArgs& args) {
+  LoadedExtractor loaded = load_extractor(args);
+  if (args.task == "parking")
+    return std::make_unique<ParkingKit>(loaded.extractor, loaded.notice,
+                                        ParkingKitOptions{default_parking_pool_file(), {}});
+  return std::make_unique<WritingKit>(loaded.extractor, loaded.notice, WritingKitOptions{});
+}
+
+std::string drill_caption(const TaskKit& kit, const PlayableDrill& drill, std::size_t index) {
+  std::string caption = "drill " + std::to_string(index + 1) + " for skill " + std::to_string(drill.plan.target_skill) +
+                        " (" + kit.describe_skill(drill.plan.target_skill) + "), skills";
+  for (int m : drill.plan.ngram) caption += " " + std::to_string(m);
+  if (drill.plan.repetitions > 1) caption += " x" + std::to_string(drill.plan.repetitions);
+  return caption;
+}
+
+void write_drill_pngs(const TaskKit& kit, const Diagnosis& diagnosis, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  std::unique_ptr<GlContext> context;
+  for (std::size_t i = 0; i < diagnosis.drills.size(); ++i) {
+    const PlayableDrill& drill = diagnosis.drills[i];
+    const std::filesystem::path file = dir / ("drill_" + std::to_string(i + 1) + ".png");
+    if (kit.task() == "parking") {
+      // The drill trial drawn as a trail, its ghost path as the ribbon to follow.
+      const ParkingTrial trial = parse_parking_trial(kit.drill_trial(drill), "drill");
+      const ParkingPath ghost = simulate_parking_path(trial);
+      if (!context) context = create_offscreen_context_from_env(1280, 720);
+      ParkingTrialImageOptions options;
+      options.expert = &ghost;
+      write_png(file, render_parking_trial_image(*context, trial, options));
+    } else {
+      writing_view::WritingScene scene;
+      scene.ribbon = WritingDrillProjector::drill_trace(drill);
+      scene.caption = drill_caption(kit, drill, i);
+      write_png(file, writing_view::render_writing_scene_image(scene, 1000, 600));
+    }
+    std::fprintf(stderr, "%s: %s\n", file.string().c_str(), drill_caption(kit, drill, i).c_str());
+  }
+}
+
+int run(const DiagnoseArgs& args) {
+  std::vector<Json> trials;
+  for (const std::string& file : args.trials) trials.push_back(read_json_file(file));
+  const std::unique_ptr<TaskKit> kit = make_kit(args);
+  if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
+  Diagnosis diagnosis;
+  try {
+    diagnosis = diagnose_trials(*kit, trials, args.seed);
+  } catch (const InputError& e) {
+    // "trial 2: ..." -> name the file instead.
+    const std::string message = e.what();
+    for (std::size_t i = 0; i < args.trials.size(); ++i) {
+      const std::string prefix = "trial " + std::to_string(i) + ": ";
+      if (message.rfind(prefix, 0) == 0) throw InputError(args.trials[i], message.substr(prefix.size()));
+    }
+    throw;
+  }
+  Json doc = diagnosis_json(*kit, diagnosis);
+  for (std::size_t i = 0; i < args.trials.size(); ++i) doc["trials"][i]["file"] = args.trials[i];
+  if (!args.png_dir.empty()) write_drill_pngs(*kit, diagnosis, args.png_dir);
+  if (args.out.empty())
+    std::printf("%s\n", doc.dump(1).c_str());
+  else
+    write_json_file(args.out, doc);
+  return 0;
+}
+
+CommandRunner setup(CLI::App& sub) {
+  auto args = std::make_shared<DiagnoseArgs>();
+  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  sub.add_option("--model", args->model, "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
+  sub.add_option("--seed", args->seed, "Seed of the drills' random expert segments (default 0)");
+  sub.add_option("--png", args->png_dir, "Directory to draw each drill's ghost path into (drill_N.png)");
+  sub.add_option("--out", args->out, "Write the JSON here instead of standard output");
+  sub.add_option("trials", args->trials, "Trial files of one learner (JSON)")->required();
+  return [args] { return run(*args); };
+}
+
+const CommandRegistration kReg{{"diagnose", "Find a learner's weakest skills in their trials and build drills for them",
+                                "skillcoach diagnose --task parking --png drills/ pretest1.json pretest2.json", setup}};
+
+}  // namespace
+}  // namespace sc::cli
