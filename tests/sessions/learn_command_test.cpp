@@ -54,7 +54,8 @@ long count_kind(const std::vector<records::StoredTrial>& trials, TrialKind kind)
   return std::count_if(trials.begin(), trials.end(), [kind](const auto& t) { return t.record.kind == kind; });
 }
 
-void expect_complete_session(const fs::path& dir, const std::string& learner, const std::string& task) {
+void expect_complete_session(const fs::path& dir, const std::string& learner, const std::string& task,
+                             const std::string& condition = "adaptive") {
   records::LearnerStore store(dir);
   const auto learners = store.list_learners();
   ASSERT_EQ(learners.size(), 1u);
@@ -79,7 +80,7 @@ void expect_complete_session(const fs::path& dir, const std::string& learner, co
   EXPECT_EQ(store.diagnoses_of_session(summary.session.id).size(), 1u);
   const auto curricula = store.curricula_of_session(summary.session.id);
   ASSERT_EQ(curricula.size(), 1u);
-  EXPECT_EQ(curricula[0].condition, "adaptive");
+  EXPECT_EQ(curricula[0].condition, condition);
   EXPECT_TRUE(summary.pretest_mean.has_value());
   EXPECT_TRUE(summary.eval_mean.has_value());
 }
@@ -129,8 +130,11 @@ int run_and_kill(const std::string& args, int kills_after) {
 
 TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStopped) {
   const fs::path dir = fresh_dir("sigkill");
-  const std::string args = "learn --task parking --pretest 3 --eval 2 --learner crash --data-dir " + dir.string();
-  const int reported = run_and_kill(args + " --trial-delay-ms 400", 5);  // 3 pre-test + 2 practice
+  // The Skills condition has 9 practice slots, so the kill after 3 pre-test + 2 practice trials lands
+  // in the middle of the drills.
+  const std::string args =
+      "learn --task parking --condition skills --pretest 3 --eval 2 --learner crash --data-dir " + dir.string();
+  const int reported = run_and_kill(args + " --trial-delay-ms 400", 5);
   ASSERT_EQ(reported, 5);
   int stored = 0;
   {
@@ -142,14 +146,14 @@ TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStop
     EXPECT_GE(count_kind(trials, TrialKind::Practice), 2);
     stored = static_cast<int>(count_kind(trials, TrialKind::Pretest) + count_kind(trials, TrialKind::Practice));
     EXPECT_GE(stored, reported);  // every trial reported kept is there (one more may have ended before the kill)
-    // Practice trials were kept, so the session stopped in the drills (or just after them).
-    EXPECT_TRUE(point->session.progress.phase == records::SessionPhase::Drills ||
-                point->session.progress.phase == records::SessionPhase::Evaluation);
+    EXPECT_EQ(point->session.progress.phase, records::SessionPhase::Drills);
+    EXPECT_EQ(point->session.progress.item_index, stored - 3);  // the next practice slot
+    EXPECT_EQ(point->trials_done, static_cast<int>(trials.size()));
   }
   const CommandRun resumed = run(args);
   ASSERT_EQ(resumed.status, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("resumed session"), std::string::npos) << resumed.output;
-  expect_complete_session(dir, "crash", "parking");
+  EXPECT_NE(resumed.output.find("resumed session 1 at round 1, drills"), std::string::npos) << resumed.output;
+  expect_complete_session(dir, "crash", "parking", "skills");
   records::LearnerStore store(dir);
   const auto trials = store.trials_of_session(store.list_learners()[0].sessions[0].session.id);
   for (std::size_t i = 0; i < trials.size(); ++i) EXPECT_EQ(trials[i].seq, static_cast<int>(i) + 1);

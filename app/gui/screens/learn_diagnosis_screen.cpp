@@ -66,6 +66,8 @@ class LearnDiagnosisScreen final : public Screen {
     if (!kit.extractor_notice().empty()) learn_ui::muted_wrapped(("Note: " + kit.extractor_notice()).c_str());
     double worst = 1e-9;
     for (double v : e.expertise) worst = std::max(worst, -v);
+    if (worst <= 1e-9)
+      learn_ui::muted_wrapped("No skill stood out as missing: the drills cover the skills the expert relies on most.");
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
     ImDrawList& d = *ImGui::GetWindowDrawList();
     const ImVec2 pic(110 * sc, 56 * sc);

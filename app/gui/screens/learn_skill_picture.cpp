@@ -16,18 +16,48 @@ struct Polyline {
   std::size_t first = 0, last = 0;
 };
 
+std::vector<ImVec2> trial_points(const Json& trial) {
+  std::vector<ImVec2> points;
+  if (trial.value("task", "") == "parking") {
+    const ParkingPath path = simulate_parking_path(parse_parking_trial(trial, "trial"));
+    for (const auto& s : path.samples) points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
+  } else {
+    for (const auto& p : writing::parse_writing_trial(trial, "trial").points)
+      points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
+  }
+  return points;
+}
+
+// Maps world points into the box (uniform scale, centred) given their joint bounds.
+struct BoxMap {
+  ImVec2 o, size, lo{1e30f, 1e30f}, hi{-1e30f, -1e30f};
+  void include(const std::vector<ImVec2>& points) {
+    for (const ImVec2& p : points) {
+      lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
+      hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
+    }
+  }
+  std::vector<ImVec2> map(const std::vector<ImVec2>& points) const {
+    const float pad = 10.0f;
+    const float scale = std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x),
+                                 (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
+    std::vector<ImVec2> out;
+    for (const ImVec2& p : points)
+      out.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,
+                       o.y + size.y * 0.5f + (p.y - (lo.y + hi.y) * 0.5f) * scale);
+    return out;
+  }
+};
+
 Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
   Polyline out;
   const std::string task = demo.trial.value("task", "");
+  out.points = trial_points(demo.trial);
   if (task == "parking") {
-    const ParkingPath path = simulate_parking_path(parse_parking_trial(demo.trial, "expert trial"));
-    for (const auto& s : path.samples) out.points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
     const std::size_t per_step = static_cast<std::size_t>(parking::kSubstepsPerAction);
     out.first = static_cast<std::size_t>(segment.begin) * per_step;
     out.last = static_cast<std::size_t>(segment.end) * per_step;
   } else {
-    const writing::WritingTrial trial = writing::parse_writing_trial(demo.trial, "expert trial");
-    for (const auto& p : trial.points) out.points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
     // Writing steps are resampled pen steps; the segment's share of the pen path is close enough to show.
     const double T = std::max(1, demo.steps.length());
     out.first = static_cast<std::size_t>(segment.begin / T * static_cast<double>(out.points.size()));
@@ -61,6 +91,19 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
   const ImU32 color = highlight ? IM_COL32(255, 160, 90, 255) : IM_COL32(91, 155, 255, 255);
   if (n >= 2) d.AddPolyline(mapped.data() + line.first, n, color, ImDrawFlags_None, 3.5f);
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
+}
+
+void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {
+  d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
+  const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
+  if (learner.size() < 2 || expert.size() < 2) return;
+  BoxMap box{o, size};
+  box.include(learner);
+  box.include(expert);
+  const std::vector<ImVec2> e = box.map(expert), l = box.map(learner);
+  d.AddPolyline(e.data(), static_cast<int>(e.size()), IM_COL32(91, 155, 255, 80), ImDrawFlags_None, 9.0f);
+  d.AddPolyline(l.data(), static_cast<int>(l.size()), IM_COL32(255, 226, 138, 235), ImDrawFlags_None, 2.5f);
+  d.AddCircleFilled(l.back(), 4.0f, IM_COL32(255, 226, 138, 235));
 }
 
 }  // namespace sc

@@ -11,4 +11,9 @@ namespace sc {
 void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertDemo& demo,
                         const SkillSegment& segment, bool highlight);
 
+// Before/after pictures: the expert's path of the same scenario as a wide faint band, the learner's path
+// over it in yellow, both fitted into the box together.
+void draw_overlay_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
+                          const Json& expert_trial);
+
 }  // namespace sc

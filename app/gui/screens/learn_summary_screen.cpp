@@ -82,21 +82,20 @@ class LearnSummaryScreen final : public Screen {
     const float sc = ui.ui_scale;
     const ImVec2 size(380 * sc, 150 * sc);
     ImDrawList& d = *ImGui::GetWindowDrawList();
-    const auto picture = [&](const char* caption, const Json& trial) {
+    const auto picture = [&](const char* caption, const Json& trial, const Json& expert) {
       ImGui::BeginGroup();
       ImGui::TextDisabled("%s", caption);
-      ExpertDemo demo;
-      demo.trial = trial;
-      demo.steps = s.kit().steps_of(trial);
       const ImVec2 at = ImGui::GetCursorScreenPos();
-      draw_skill_picture(d, at, size, demo, {0, 0, demo.steps.length()}, false);
+      draw_overlay_picture(d, at, size, trial, expert);
       ImGui::Dummy(size);
       ImGui::EndGroup();
     };
     if (s.pretest_trials().empty() || s.eval_trials(s.round()).empty()) return;
-    picture("Before: your first pre-test trial", s.pretest_trials().front());
+    const auto& pool = s.kit().expert_pool();
+    picture("Before (yellow: you, blue: the expert)", s.pretest_trials().front(),
+            pool[static_cast<std::size_t>(s.pretest_pool_indices().front())].trial);
     ImGui::SameLine(0, 20 * sc);
-    picture("After: your first final-test trial", s.eval_trials(s.round()).front());
+    picture("After: your first final-test trial", s.eval_trials(s.round()).front(), s.eval_experts().front().trial);
   }
 
   LearnFlow& flow_;

@@ -41,6 +41,7 @@ class LearnTrialScreen final : public Screen {
     prepare();
     if (services.headless) {  // screenshots: a practice run a few steps in, ghost and trail visible
       stage_ = Stage::driving;
+      demo_pending_ = false;
       while (drive_->control_steps() < kHeadlessPreRollSteps && !drive_->done()) drive_->substep(expert_action());
     }
   }
@@ -230,7 +231,7 @@ class LearnTrialScreen final : public Screen {
       ImGui::TextUnformatted("Watch the ghost car: the stick at the bottom right shows the expert's inputs.");
     if (ghost_ && stage_ == Stage::driving) {
       ImGui::SameLine(0, 30 * s);
-      ImGui::TextDisabled("Follow the blue band. Esc pauses.");
+      ImGui::TextDisabled("Follow the ghost band (blue: forward, pink: reversing). Esc pauses.");
     }
     ImGui::End();
   }
