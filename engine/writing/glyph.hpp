@@ -4,6 +4,7 @@
 //  * classic  = the paper's pipeline, reference-facts §2.4, bit for bit (first stroke only, no pen lifts).
 //  * balinese = our extension for the full alphabet: every stroke, pen-up moves between strokes.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/writing/stroke_file.hpp"
@@ -33,7 +34,8 @@ struct ClassicCharacterPoints {
   std::vector<Point2> points;
   int lead_in_points = 0;  // points prepended by the baseline lead-in rule (step 4)
 };
-ClassicCharacterPoints classic_character_points(const StrokeDrawing& drawing);
+// `source` names the drawing in errors (a zero-width first stroke).
+ClassicCharacterPoints classic_character_points(const StrokeDrawing& drawing, std::string_view source = "stroke file");
 // Steps = consecutive differences of classic_character_points (step 6), all pen-down.
 Glyph classic_glyph(char symbol, const StrokeDrawing& drawing, std::string source);
 

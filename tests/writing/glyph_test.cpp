@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/error.hpp"
 #include "engine/writing/alphabet.hpp"
 
 namespace sc::writing {
@@ -94,6 +95,17 @@ TEST(ClassicGlyphs, FirstActionsAreTheLeadInAndAHasOneZeroAction) {
   }
   const auto& a = set.glyph('a').steps;
   EXPECT_EQ(std::count_if(a.begin(), a.end(), [](const WritingStep& s) { return s.dx == 0 && s.dy == 0; }), 1);
+}
+
+TEST(ClassicGlyphs, ZeroWidthStrokeIsAnInputErrorNamingTheFile) {
+  StrokeDrawing vertical;
+  vertical.strokes.push_back({{5, 0, 0}, {5, 10, 1}});
+  try {
+    classic_character_points(vertical, "x/0000_01.txt");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "x/0000_01.txt: first stroke has zero width");
+  }
 }
 
 TEST(ConnectorGlyphs, ShapesAndErrors) {
