@@ -1,0 +1,98 @@
+// End-to-end checks of `skillcoach diagnose` through SKILLCOACH_BINARY.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/json_file.hpp"
+
+namespace sc {
+namespace {
+
+std::filesystem::path scratch(const std::string& name) {
+  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  std::filesystem::path p = std::filesystem::path(dir ? dir : ".") / "diagnose" / name;
+  std::filesystem::remove_all(p);
+  std::filesystem::create_directories(p.parent_path());
+  return p;
+}
+
+struct Result {
+  int status = -1;
+  std::string output;
+};
+
+Result run(const std::string& arguments, const std::string& name) {
+  const auto log = scratch(name + ".log");
+  const std::string command = std::string(std::getenv("SKILLCOACH_BINARY")) + " " + arguments + " > " + log.string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
+  const auto trial = scratch("line.json");
+  Json doc = {{"task", "writing"}, {"scenario", {{"word", "b-a-t---"}}}, {"points", Json::array()}};
+  for (int x = 0; x < 400; x += 2) doc["points"].push_back({x, 150});
+  write_json_file(trial, doc);
+  const auto out = scratch("writing.json");
+  const auto png = scratch("writing_png");
+  const Result r = run("diagnose --task writing --png " + png.string() + " --out " + out.string() + " " + trial.string(), "writing");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Json d = read_json_file(out);
+  EXPECT_EQ(d.at("task"), "writing");
+  ASSERT_EQ(d.at("trials").size(), 1u);
+  EXPECT_EQ(d.at("trials")[0].at("file"), trial.string());
+  EXPECT_LT(d.at("trials")[0].at("reward").get<double>(), -0.5);  // a straight line is far from the word
+  EXPECT_FALSE(d.at("trials")[0].at("skills").empty());
+  EXPECT_LE(d.at("targets").size(), 8u);  // N_target = 8 for writing
+  ASSERT_FALSE(d.at("drills").empty());
+  for (std::size_t i = 0; i < d.at("drills").size(); ++i) {
+    const Json& drill = d.at("drills")[i];
+    EXPECT_EQ(drill.at("repetitions"), 3);  // N_rep = 3 for writing
+    EXPECT_EQ(drill.at("ghost_path").size(), drill.at("trial").at("points").size());
+    EXPECT_TRUE(std::filesystem::exists(png / ("drill_" + std::to_string(i + 1) + ".png")));
+  }
+}
+
+TEST(DiagnoseCommand, ParkingLearnerOnAPoolScenarioIsComparedWithThatExpert) {
+  const Json pool = read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
+  Json learner = pool.at("trials")[4];
+  learner.erase("states");
+  learner.erase("rewards");
+  learner.erase("success");
+  learner["source"] = "learner";
+  Json& actions = learner.at("actions");
+  actions.erase(actions.begin() + static_cast<long>(actions.size() / 2), actions.end());  // gives up half-way
+  const auto trial = scratch("half.json");
+  write_json_file(trial, learner);
+  const auto out = scratch("parking.json");
+  const Result r = run("diagnose --task parking --out " + out.string() + " " + trial.string(), "parking");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Json d = read_json_file(out);
+  EXPECT_EQ(d.at("trials")[0].at("pool_index"), 4);
+  EXPECT_LT(d.at("trials")[0].at("reward").get<double>(), pool.at("trials")[4].at("rewards").back().get<double>());
+  for (const Json& drill : d.at("drills")) {
+    EXPECT_EQ(drill.at("trial").at("task"), "parking");
+    EXPECT_TRUE(drill.at("trial").at("scenario").contains("start"));
+    EXPECT_EQ(drill.at("ghost_path").size(), drill.at("trial").at("states").size());
+  }
+}
+
+TEST(DiagnoseCommand, TrialOfAnotherTaskIsAnInputErrorNamingTheFile) {
+  const auto trial = scratch("wrong.json");
+  write_json_file(trial, Json{{"task", "parking"}, {"scenario", {{"word", "ab"}}}, {"points", Json::array()}});
+  const Result r = run("diagnose --task writing " + trial.string(), "wrong");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find(trial.string() + ": $.task: expected \"writing\""), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sc

@@ -1,0 +1,242 @@
+// Planted-weakness checks (issue 6): synthetic students with a known weakness must be diagnosed with it.
+// The skills come from CompILE: the shipped model (assets/models/<task>.pt) when it exists, else a small
+// CompILE trained here on the kit's own expert demos (the time heuristic's slices cannot know about
+// reversing or characters, so it would make these checks meaningless).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/asset_paths.hpp"
+#include "engine/parking/parking_expert.hpp"
+#include "engine/writing/writing_trial.hpp"
+#include "teaching/scenarios/diverse_scenario_selection.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/compile_trainer.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/diagnosis.hpp"
+#include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/parking_kit.hpp"
+#include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+
+namespace sc {
+namespace {
+
+// The shipped model, or a small CompILE trained on `demos` with the task's defaults scaled down.
+std::shared_ptr<const SkillExtractor> compile_extractor(const std::string& task, const std::vector<StepSequence>& demos,
+                                                        CompileConfig config) {
+  const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
+  if (std::filesystem::exists(shipped)) {
+    std::printf("%s: using the shipped model %s\n", task.c_str(), shipped.string().c_str());
+    return std::make_shared<CompileExtractor>(CompileExtractor::load(shipped, task));
+  }
+  CompileTrainer trainer(config);
+  auto model = std::make_shared<const CompileModel>(trainer.train(demos, {}));
+  std::printf("%s: trained a CompILE model here (%d iterations, %.1f s)\n", task.c_str(),
+              trainer.summary().iterations_run, trainer.summary().seconds);
+  return std::make_shared<CompileExtractor>(model);
+}
+
+void print_ranking(const TaskKit& kit, const ExpertiseEstimate& e) {
+  for (int m : e.ranking)
+    std::printf("  skill %2d  E = %8.4f  (%d uses)  %s\n", m, e.expertise[static_cast<std::size_t>(m)],
+                e.occurrences[static_cast<std::size_t>(m)], kit.describe_skill(m).c_str());
+}
+
+// ---------------------------------------------------------------------------------------------- parking
+
+// A student who never reverses: wherever the expert accelerates backwards, the student brakes to a stop
+// instead (the deceleration that brings the speed to zero in one control step, never below), steering as
+// the expert does; then the whole episode is re-simulated.
+ParkingTrial never_reversing_student(const ParkingTrial& expert) {
+  ParkingSim sim(expert.scenario);
+  ParkingTrial student;
+  student.scenario = expert.scenario;
+  student.states.push_back(sim.observation());
+  for (const ParkingAction& a : expert.actions) {
+    if (sim.done()) break;
+    ParkingAction u = clip_action(a);
+    if (u[0] < 0.0) {
+      const double speed = std::max(sim.vehicle().speed, 0.0);
+      const double stop = -speed / (parking::kMaxAcceleration * parking::kControlHz);  // u0 that stops in 0.2 s
+      u[0] = std::max(u[0], stop);
+    }
+    const ParkingStepResult r = sim.step(u);
+    student.actions.push_back(u);
+    student.states.push_back(sim.observation());
+    student.rewards.push_back(r.reward);
+  }
+  student.success = sim.succeeded();
+  student.source = "learner";
+  return student;
+}
+
+struct ParkingSetup {
+  std::vector<ParkingTrial> pool;
+  std::unique_ptr<ParkingKit> kit;
+  std::vector<int> pretest;
+};
+
+const ParkingSetup& parking() {
+  static const ParkingSetup setup = [] {
+    ParkingSetup s;
+    s.pool = generate_parking_pool({60, 0});
+    std::vector<StepSequence> demos;
+    for (const ParkingTrial& t : s.pool) demos.push_back(parking_step_sequence(t));
+    CompileConfig c = CompileConfig::parking_defaults();
+    c.latent_size = 16;
+    c.hidden = 64;
+    c.batch_size = 60;
+    c.iterations = 400;
+    c.patience = 1000;
+    c.seed = 1;
+    s.kit = std::make_unique<ParkingKit>(compile_extractor("parking", demos, c), "", s.pool);
+    s.pretest = select_diverse_scenarios(demo_skills(s.kit->expert_pool()), 10).scenarios();
+    return s;
+  }();
+  return setup;
+}
+
+TEST(PlantedWeakness, ParkingStudentWhoNeverReversesIsWeakestAtReversing) {
+  const ParkingSetup& s = parking();
+  std::vector<Json> trials;
+  int reversing_scenarios = 0;
+  for (int i : s.pretest) {
+    const ParkingTrial& expert = s.pool[static_cast<std::size_t>(i)];
+    reversing_scenarios += std::any_of(expert.actions.begin(), expert.actions.end(), [](const auto& a) { return a[0] < 0; });
+    trials.push_back(parking_trial_to_json(never_reversing_student(expert)));
+  }
+  const Diagnosis d = diagnose_trials(*s.kit, trials, 0);
+  std::printf("never-reversing student, %zu pre-test scenarios (%d with reverse acceleration):\n", trials.size(),
+              reversing_scenarios);
+  print_ranking(*s.kit, d.expertise);
+  const auto& motions = s.kit->skill_motions();
+  auto reversing = [&](int m) { return motions[static_cast<std::size_t>(m)].reverse_fraction >= 0.5; };
+  std::vector<int> seen_reversing;
+  for (int m : d.expertise.ranking)
+    if (reversing(m)) seen_reversing.push_back(m);
+  ASSERT_FALSE(seen_reversing.empty()) << "the pre-test shows no reversing skill";
+  // The weakest skill is a reversing one, and every reversing skill the pre-test showed was penalised and
+  // ranks among the weakest |reversing| + 1 skills.
+  EXPECT_TRUE(reversing(d.expertise.ranking.front()));
+  for (int m : seen_reversing) {
+    EXPECT_TRUE(d.expertise.penalised(m)) << "skill " << m;
+    const auto pos = std::find(d.expertise.ranking.begin(), d.expertise.ranking.end(), m) - d.expertise.ranking.begin();
+    EXPECT_LE(pos, static_cast<long>(seen_reversing.size())) << "skill " << m;
+  }
+  // The drills target it.
+  ASSERT_FALSE(d.drills.empty());
+  EXPECT_TRUE(reversing(d.drills.front().plan.target_skill));
+}
+
+TEST(PlantedWeakness, ParkingStudentIdenticalToTheExpertIsNotPenalised) {
+  const ParkingSetup& s = parking();
+  std::vector<Json> trials;
+  for (int i : s.pretest) trials.push_back(parking_trial_to_json(s.pool[static_cast<std::size_t>(i)]));
+  const Diagnosis d = diagnose_trials(*s.kit, trials, 0);
+  for (int m = 0; m < d.expertise.num_skills(); ++m) {
+    EXPECT_FALSE(d.expertise.penalised(m)) << "skill " << m;
+    EXPECT_EQ(d.expertise.expertise[static_cast<std::size_t>(m)], 0.0);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------- writing
+
+constexpr char kDistorted = 'b';
+
+// The student writes the expert's word, except that every `symbol` is a straight line from where the
+// character starts to where it ends (same number of pen points, so the pace is unchanged).
+writing::WritingTrial distorted_student(const writing::WordTrajectory& gold, char symbol) {
+  std::vector<writing::TracePoint> points = gold.points();
+  const int n = static_cast<int>(gold.word.size());
+  for (int k = 0; k < n; ++k) {
+    if (gold.word[static_cast<std::size_t>(k)] != symbol) continue;
+    const int a = gold.character_starts[static_cast<std::size_t>(k)];
+    const int b = k + 1 < n ? gold.character_starts[static_cast<std::size_t>(k + 1)] : static_cast<int>(gold.steps.size());
+    const writing::TracePoint p0 = points[static_cast<std::size_t>(a)];
+    const writing::TracePoint p1 = points[static_cast<std::size_t>(b)];
+    for (int i = a + 1; i < b; ++i) {
+      const double f = static_cast<double>(i - a) / (b - a);
+      points[static_cast<std::size_t>(i)].x = p0.x + f * (p1.x - p0.x);
+      points[static_cast<std::size_t>(i)].y = p0.y + f * (p1.y - p0.y);
+    }
+  }
+  writing::WritingTrial trial;
+  trial.scenario = {gold.word, gold.alphabet, {}};
+  trial.points = std::move(points);
+  trial.source = "learner";
+  return trial;
+}
+
+// The writing check needs CompILE skills that follow the characters. A small CompILE trained here does not
+// give them (measured: 30 words, latent 12, hidden 32, 150 iterations -> only 2 of 12 skills used, none
+// inside one character; hidden 64 / 400 iterations grew past 20 GB of memory on this machine and was
+// stopped), so the distorted-character check runs with the shipped model only and is skipped without it.
+std::filesystem::path shipped_writing_model() { return asset_dir() / "models" / "writing.pt"; }
+
+struct WritingSetup {
+  std::unique_ptr<WritingKit> kit;
+  std::vector<int> pretest;
+};
+
+// With the shipped model when it exists, else the time heuristic (enough for the identical student).
+const WritingSetup& writing_setup() {
+  static const WritingSetup setup = [] {
+    WritingSetup s;
+    const WritingKitOptions options{{}, writing::AlphabetKind::Classic, 30, 0};
+    std::shared_ptr<const SkillExtractor> extractor;
+    if (std::filesystem::exists(shipped_writing_model()))
+      extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(shipped_writing_model(), "writing"));
+    else
+      extractor = std::make_shared<TimeHeuristicExtractor>(kWritingTimeSlices);
+    s.kit = std::make_unique<WritingKit>(extractor, "", options);
+    s.pretest = select_diverse_scenarios(demo_skills(s.kit->expert_pool()), 10).scenarios();
+    return s;
+  }();
+  return setup;
+}
+
+TEST(PlantedWeakness, WritingStudentWithADistortedCharacterIsWeakestAtItsSkills) {
+  if (!std::filesystem::exists(shipped_writing_model()))
+    GTEST_SKIP() << shipped_writing_model().string() << " missing: a CompILE trained in the test collapses to 2 skills";
+  const WritingSetup& s = writing_setup();
+  std::vector<Json> trials;
+  int with_symbol = 0;
+  for (int i : s.pretest) {
+    const writing::WordTrajectory& gold = s.kit->gold_words()[static_cast<std::size_t>(i)];
+    with_symbol += gold.word.find(kDistorted) != std::string::npos;
+    trials.push_back(writing::writing_trial_json(distorted_student(gold, kDistorted)));
+  }
+  const Diagnosis d = diagnose_trials(*s.kit, trials, 0);
+  std::printf("student with a straight-line '%c', %zu pre-test words (%d contain it):\n", kDistorted, trials.size(),
+              with_symbol);
+  print_ranking(*s.kit, d.expertise);
+  ASSERT_GT(with_symbol, 0);
+  const auto& places = s.kit->skill_places();
+  auto of_symbol = [&](int m) { return places[static_cast<std::size_t>(m)].share_of(kDistorted) >= 0.5; };
+  for (int m : d.expertise.ranking)
+    std::printf("  skill %2d: %.0f %% of its expert steps in '%c'\n", m, 100 * places[static_cast<std::size_t>(m)].share_of(kDistorted), kDistorted);
+  std::vector<int> seen;
+  for (int m : d.expertise.ranking)
+    if (of_symbol(m)) seen.push_back(m);
+  ASSERT_FALSE(seen.empty()) << "no skill lies mostly in '" << kDistorted << "'";
+  // The character's skills are the weakest: they come first in the ranking, all penalised.
+  for (std::size_t r = 0; r < seen.size(); ++r) {
+    EXPECT_TRUE(of_symbol(d.expertise.ranking[r])) << "rank " << r << ": skill " << d.expertise.ranking[r];
+    EXPECT_TRUE(d.expertise.penalised(seen[r])) << "skill " << seen[r];
+  }
+}
+
+TEST(PlantedWeakness, WritingStudentIdenticalToTheExpertIsNotPenalised) {
+  const WritingSetup& s = writing_setup();
+  std::vector<Json> trials;
+  for (int i : s.pretest) trials.push_back(s.kit->expert_pool()[static_cast<std::size_t>(i)].trial);
+  const Diagnosis d = diagnose_trials(*s.kit, trials, 0);
+  for (int m = 0; m < d.expertise.num_skills(); ++m) EXPECT_FALSE(d.expertise.penalised(m)) << "skill " << m;
+}
+
+}  // namespace
+}  // namespace sc
