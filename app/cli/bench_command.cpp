@@ -2,6 +2,7 @@
 // process and writes docs/benchmarks.md (bench_report.hpp): machine info, and per benchmark the median
 // and spread over repetitions. --quick trades precision for time (fewer repetitions, shorter runs).
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -31,6 +32,8 @@ struct BenchOptions {
 // computes from them: the report computes its own median and spread).
 class CollectingReporter : public benchmark::ConsoleReporter {
  public:
+  // No colour escapes when the output is a pipe or a CI log.
+  CollectingReporter() : benchmark::ConsoleReporter(isatty(STDOUT_FILENO) ? OO_Defaults : OO_Tabular) {}
   void ReportRuns(const std::vector<Run>& runs) override {
     benchmark::ConsoleReporter::ReportRuns(runs);
     for (const Run& run : runs) {
