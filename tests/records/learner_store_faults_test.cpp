@@ -33,8 +33,14 @@ void expect_trials(const LearnerStore& store, std::int64_t session_id, int count
 }
 
 // A directory that the unprivileged child can own (root ignores permissions, so those tests drop to nobody).
+// The child drops to uid 65534, which must be able to reach the folder: the build tree may sit under a
+// private directory (a fresh clone in a mktemp -d folder is 0700), so these folders live in the system's
+// temporary directory instead.
 std::filesystem::path dir_for_child(const std::string& name) {
-  const auto dir = fresh_dir(name);
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("skillcoach-records-" + std::to_string(getpid()) + "-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
   if (geteuid() == 0 && chown(dir.c_str(), 65534, 65534) != 0) ADD_FAILURE() << "chown failed";
   return dir;
 }
@@ -141,6 +147,7 @@ TEST(LearnerStoreFaults, ReadOnlyDatabaseFileKeepsTrialsUntilWritable) {
       },
       /*as_nobody=*/true);
   EXPECT_EQ(code, 0);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(LearnerStoreFaults, ReadOnlyDirectoryKeepsTrialsInMemoryUntilWritable) {
@@ -170,6 +177,7 @@ TEST(LearnerStoreFaults, ReadOnlyDirectoryKeepsTrialsInMemoryUntilWritable) {
       },
       /*as_nobody=*/true);
   EXPECT_EQ(code, 0);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(LearnerStoreFaults, LockedDatabaseQueuesInOrderAndCatchesUp) {
