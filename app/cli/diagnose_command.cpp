@@ -17,10 +17,9 @@
 #include "engine/render/gl_context.hpp"
 #include "engine/render/rgba_image.hpp"
 #include "engine/writing_view/writing_trial_image.hpp"
-#include "teaching/skills/compile_extractor.hpp"
-#include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/diagnosis.hpp"
 #include "teaching/tasks/parking_kit.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "teaching/tasks/writing_drill_projector.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 
@@ -35,34 +34,6 @@ struct DiagnoseArgs {
   unsigned long long seed = 0;
   std::vector<std::string> trials;
 };
-
-struct LoadedExtractor {
-  std::shared_ptr<const SkillExtractor> extractor;
-  std::string notice;
-};
-
-// --model must load (the user asked for it); the default model falls back to the time heuristic with a
-// notice, so a fresh checkout without trained models still diagnoses.
-LoadedExtractor load_extractor(const DiagnoseArgs& args) {
-  const int k = args.task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
-  if (!args.model.empty())
-    return {std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, args.task)), ""};
-  const std::filesystem::path model = asset_dir() / "models" / (args.task + ".pt");
-  try {
-    if (!std::filesystem::exists(model)) throw InputError(model.string(), "missing");
-    return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, args.task)), ""};
-  } catch (const InputError& e) {
-    return {std::make_shared<TimeHeuristicExtractor>(k), std::string(e.what()) + "; using the time heuristic"};
-  }
-}
-
-std::unique_ptr<TaskKit> make_kit(const DiagnoseArgs& args) {
-  LoadedExtractor loaded = load_extractor(args);
-  if (args.task == "parking")
-    return std::make_unique<ParkingKit>(loaded.extractor, loaded.notice,
-                                        ParkingKitOptions{default_parking_pool_file(), {}});
-  return std::make_unique<WritingKit>(loaded.extractor, loaded.notice, WritingKitOptions{});
-}
 
 std::string drill_caption(const TaskKit& kit, const PlayableDrill& drill, std::size_t index) {
   std::string caption = "drill " + std::to_string(index + 1) + " for skill " + std::to_string(drill.plan.target_skill) +
@@ -99,7 +70,7 @@ void write_drill_pngs(const TaskKit& kit, const Diagnosis& diagnosis, const std:
 int run(const DiagnoseArgs& args) {
   std::vector<Json> trials;
   for (const std::string& file : args.trials) trials.push_back(read_json_file(file));
-  const std::unique_ptr<TaskKit> kit = make_kit(args);
+  const std::unique_ptr<TaskKit> kit = make_task_kit(args.task, args.model);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   Diagnosis diagnosis;
   try {

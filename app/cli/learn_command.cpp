@@ -13,7 +13,7 @@
 
 #include "app/cli/command_registry.hpp"
 #include "app/gui/screens/learn_scripted_learner.hpp"
-#include "app/gui/screens/learn_task_kits.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 #include "teaching/sessions/training_session.hpp"
@@ -41,7 +41,7 @@ void print_trial(const TrainingSession& s, const std::string& kind, const Submit
 }
 
 int run(const LearnOptions& o) {
-  const auto kit = make_trainer_kit(o.task);
+  const auto kit = make_task_kit(o.task);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   std::unique_ptr<TrainingSession> session;

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "app/gui/screens/learn_scripted_learner.hpp"
-#include "app/gui/screens/learn_task_kits.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 
@@ -20,7 +20,7 @@ TimestampSource clock_of(const LearnFlow& flow) {
 TaskKit& LearnFlow::kit(const AppServices& services) {
   const std::string task(to_string(services.task));
   if (!kit_ || kit_task_ != task) {
-    kit_ = make_trainer_kit(task);
+    kit_ = make_task_kit(task);
     kit_task_ = task;
   }
   return *kit_;

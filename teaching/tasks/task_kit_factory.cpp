@@ -1,0 +1,45 @@
+#include "teaching/tasks/task_kit_factory.hpp"
+
+#include "engine/core/asset_paths.hpp"
+#include "engine/core/error.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_kit.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+
+namespace sc {
+namespace {
+
+struct ChosenExtractor {
+  std::shared_ptr<const SkillExtractor> extractor;
+  std::string notice;  // why the time heuristic is used; empty for the trained model
+};
+
+ChosenExtractor choose_extractor(const std::string& task, const std::filesystem::path& model) {
+  if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), ""};
+  const int slices = task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
+  const std::string relative = "assets/models/" + task + ".pt";
+  const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
+  // The missing case names the asset relative to the asset folder, so the notice (shown on screen and in
+  // goldens) does not depend on where the checkout lives.
+  if (!std::filesystem::exists(shipped))
+    return {std::make_shared<TimeHeuristicExtractor>(slices), relative + ": missing; using the time heuristic"};
+  try {
+    return {std::make_shared<CompileExtractor>(CompileExtractor::load(shipped, task)), ""};
+  } catch (const InputError& e) {
+    return {std::make_shared<TimeHeuristicExtractor>(slices), std::string(e.what()) + "; using the time heuristic"};
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model) {
+  if (task != "parking" && task != "writing") throw InputError("task", "'" + task + "' is not parking or writing");
+  ChosenExtractor chosen = choose_extractor(task, model);
+  if (task == "parking")
+    return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice,
+                                        ParkingKitOptions{default_parking_pool_file(), {}});
+  return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
+}
+
+}  // namespace sc
