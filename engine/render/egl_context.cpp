@@ -10,7 +10,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/offscreen_contexts.hpp"
-#include "engine/render/offscreen_framebuffer.hpp"
+#include "engine/render/offscreen_gl_context.hpp"
 
 namespace sc {
 namespace {
@@ -25,7 +25,7 @@ std::string egl_error_text() {
 
 GlProc egl_proc(const char* name) { return reinterpret_cast<GlProc>(eglGetProcAddress(name)); }
 
-class EglContext final : public GlContext {
+class EglContext final : public OffscreenGlContext {
  public:
   EglContext(int width, int height) {
     auto get_platform_display =
@@ -50,50 +50,28 @@ class EglContext final : public GlContext {
                                       EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
     if (context_ == EGL_NO_CONTEXT) throw InputError(kWhere, "cannot create an OpenGL 3.3 core context: " + egl_error_text());
-    bind();
+    bind_context();
     load_functions(&egl_proc, kWhere);
-    set_current_gl_functions(&gl());
-    framebuffer_.emplace(gl(), width, height);
+    attach_framebuffer(width, height);
   }
 
   ~EglContext() override {
-    make_current();
-    framebuffer_.reset();
-    if (current_gl_functions() == &gl()) set_current_gl_functions(nullptr);
+    release_framebuffer();
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
     // No eglTerminate: the surfaceless display is a per-process singleton that other contexts may share.
   }
 
   std::string_view backend_name() const override { return "egl"; }
-  void make_current() override {
-    bind();
-    if (framebuffer_) set_current_gl_functions(&gl());
-  }
-  int width() const override { return framebuffer_->width(); }
-  int height() const override { return framebuffer_->height(); }
-  GLuint target_framebuffer() const override { return framebuffer_->draw_framebuffer(); }
-  void present() override {
-    framebuffer_->resolve();
-    gl().Finish();
-  }
-  RgbaImage read_rgba() override { return framebuffer_->read(); }
-  void resize(int width, int height) override {
-    if (width == this->width() && height == this->height()) return;
-    make_current();
-    framebuffer_.reset();
-    framebuffer_.emplace(gl(), width, height);
-  }
 
  private:
-  void bind() {
+  void bind_context() override {
     if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_FALSE)
       throw InputError(kWhere, "eglMakeCurrent failed: " + egl_error_text());
   }
 
   EGLDisplay display_ = EGL_NO_DISPLAY;
   EGLContext context_ = EGL_NO_CONTEXT;
-  std::optional<OffscreenFramebuffer> framebuffer_;
 };
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/render/offscreen_contexts.hpp"
-#include "engine/render/offscreen_framebuffer.hpp"
+#include "engine/render/offscreen_gl_context.hpp"
 
 namespace sc {
 namespace {
@@ -59,7 +59,7 @@ OsmesaLibrary open_osmesa() {
   return lib;
 }
 
-class OsmesaContext final : public GlContext {
+class OsmesaContext final : public OffscreenGlContext {
  public:
   OsmesaContext(int width, int height) : lib_(open_osmesa()) {
     const int attribs[] = {kOsmesaFormat, GL_RGBA, kOsmesaDepthBits, 24, kOsmesaStencilBits, 8,
@@ -70,46 +70,28 @@ class OsmesaContext final : public GlContext {
   }
 
   ~OsmesaContext() override {
-    make_current();
-    framebuffer_.reset();
-    if (current_gl_functions() == &gl()) set_current_gl_functions(nullptr);
+    release_framebuffer();
     lib_.destroy_context(context_);
   }
 
   std::string_view backend_name() const override { return "osmesa"; }
-  void make_current() override {
+
+ private:
+  void bind_context() override {
     // OSMesa needs a client buffer to bind; we draw into our own framebuffer object, so it stays 1x1.
     if (lib_.make_current(context_, default_buffer_.data(), GL_UNSIGNED_BYTE, 1, 1) == 0)
       throw InputError(kLibrary, "OSMesaMakeCurrent failed");
-    if (framebuffer_) set_current_gl_functions(&gl());
-  }
-  int width() const override { return framebuffer_->width(); }
-  int height() const override { return framebuffer_->height(); }
-  GLuint target_framebuffer() const override { return framebuffer_->draw_framebuffer(); }
-  void present() override {
-    framebuffer_->resolve();
-    gl().Finish();
-  }
-  RgbaImage read_rgba() override { return framebuffer_->read(); }
-  void resize(int width, int height) override {
-    if (width == this->width() && height == this->height()) return;
-    make_current();
-    framebuffer_.reset();
-    framebuffer_.emplace(gl(), width, height);
   }
 
- private:
   void allocate(int width, int height) {
-    make_current();
+    bind_context();
     load_functions(lib_.get_proc_address, kLibrary);
-    set_current_gl_functions(&gl());
-    framebuffer_.emplace(gl(), width, height);
+    attach_framebuffer(width, height);
   }
 
   OsmesaLibrary lib_;
   OsmesaContextHandle context_ = nullptr;
   std::vector<std::uint8_t> default_buffer_ = std::vector<std::uint8_t>(4, 0);
-  std::optional<OffscreenFramebuffer> framebuffer_;
 };
 
 }  // namespace
