@@ -14,7 +14,7 @@
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screen.hpp"
-#include "app/gui/screens/free_drive_input.hpp"
+#include "app/gui/screens/drive_input.hpp"
 #include "app/gui/screens/free_drive_scenario.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "engine/parking_view/driving_gauges.hpp"
@@ -283,7 +283,7 @@ class FreeDriveScreen final : public Screen {
   };
 
   AppServices& services_;
-  FreeDriveInput input_;
+  DriveInput input_;
   FreeDriveScenarioChoice choice_;
   std::unique_ptr<LiveParkingDrive> drive_;
   std::optional<ExpertRun> expert_;

@@ -13,7 +13,7 @@
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screen.hpp"
-#include "app/gui/screens/free_drive_input.hpp"
+#include "app/gui/screens/drive_input.hpp"
 #include "app/gui/screens/learn_flow.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
@@ -285,7 +285,7 @@ class LearnTrialScreen final : public Screen {
 
   AppServices& services_;
   LearnFlow& flow_;
-  FreeDriveInput input_;
+  DriveInput input_;
   ParkingScenario scenario_;
   std::vector<ParkingAction> expert_actions_;
   std::optional<ParkingPath> ghost_;

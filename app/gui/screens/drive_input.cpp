@@ -1,4 +1,4 @@
-#include "app/gui/screens/free_drive_input.hpp"
+#include "app/gui/screens/drive_input.hpp"
 
 #include <array>
 
@@ -30,13 +30,13 @@ bool any_button(const GamepadSnapshot& pad) {
 
 }  // namespace
 
-FreeDriveInput::FreeDriveInput(DeviceChoice& device) : device_(device) {}
+DriveInput::DriveInput(DeviceChoice& device) : device_(device) {}
 
-void FreeDriveInput::set_joystick_base(Vec2f centre, float radius) {
+void DriveInput::set_joystick_base(Vec2f centre, float radius) {
   joystick_.set_base({centre.x, centre.y}, radius);
 }
 
-void FreeDriveInput::update(const FrameInput& input) {
+void DriveInput::update(const FrameInput& input) {
   pause_toggled_ = input.keys_pressed[SDL_SCANCODE_ESCAPE];
   update_gamepad(input);
   update_keyboard(input);
@@ -46,13 +46,13 @@ void FreeDriveInput::update(const FrameInput& input) {
   for (const auto& pad : input.gamepads) previous_pads_[pad.instance_id] = pad;
 }
 
-bool FreeDriveInput::button_pressed(const GamepadSnapshot& pad, SDL_GameControllerButton button) const {
+bool DriveInput::button_pressed(const GamepadSnapshot& pad, SDL_GameControllerButton button) const {
   const auto before = previous_pads_.find(pad.instance_id);
   const bool was_down = before != previous_pads_.end() && before->second.buttons[button];
   return pad.buttons[button] && !was_down;
 }
 
-void FreeDriveInput::update_gamepad(const FrameInput& input) {
+void DriveInput::update_gamepad(const FrameInput& input) {
   gamepad_action_ = {};
   faulty_ = false;
   if (device_.kind != DeviceKind::gamepad) {
@@ -91,7 +91,7 @@ void FreeDriveInput::update_gamepad(const FrameInput& input) {
   if (button_pressed(*pad, SDL_CONTROLLER_BUTTON_START)) pause_toggled_ = !pause_toggled_;
 }
 
-void FreeDriveInput::update_keyboard(const FrameInput& input) {
+void DriveInput::update_keyboard(const FrameInput& input) {
   if (input.ui_wants_keyboard) {
     keyboard_.release_all();  // typing a seed must not drive the car
     return;
@@ -101,7 +101,7 @@ void FreeDriveInput::update_keyboard(const FrameInput& input) {
     if (const auto key = input::drive_key_for_scancode(code)) keyboard_.set_pressed(*key, input.keys_down[code]);
 }
 
-void FreeDriveInput::update_mouse(const FrameInput& input) {
+void DriveInput::update_mouse(const FrameInput& input) {
   const input::Vec2 pointer{input.mouse_pixels.x, input.mouse_pixels.y};
   if (input.mouse_pressed[0] && input.mouse_inside && !input.ui_wants_mouse) joystick_.press(pointer);
   if (joystick_.grabbed()) {
@@ -110,7 +110,7 @@ void FreeDriveInput::update_mouse(const FrameInput& input) {
   }
 }
 
-input::DriveAction FreeDriveInput::action() const {
+input::DriveAction DriveInput::action() const {
   if (state_ != DriveInputState::ready) return {};
   switch (device_.kind) {
     case DeviceKind::gamepad: return gamepad_action_;
@@ -121,7 +121,7 @@ input::DriveAction FreeDriveInput::action() const {
   return {};
 }
 
-std::string FreeDriveInput::status() const {
+std::string DriveInput::status() const {
   switch (state_) {
     case DriveInputState::device_lost:
       return "Gamepad \"" + lost_name_ + "\" disconnected - plug it back in or press a button on another pad.";

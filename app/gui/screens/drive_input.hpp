@@ -1,7 +1,8 @@
 #pragma once
-// The free-drive screen's driving input, read from the frame's input snapshot (FrameInput) with the SDL-free
-// device logic of engine/input: gamepad axes through map_gamepad (dead zones, disc->square), the on-screen
-// VirtualJoystick dragged with the mouse, and KeyboardDrive (arrows/WASD by scancode).
+// The driving input of the screens that drive the car (free drive, the trainer's trials), read from the
+// frame's input snapshot (FrameInput) with the SDL-free device logic of engine/input: gamepad axes through
+// map_gamepad (dead zones, disc->square), the on-screen VirtualJoystick dragged with the mouse, and
+// KeyboardDrive (arrows/WASD by scancode).
 // Gamepad hot-plug follows DeviceManager's rules: when the pad in use disappears the drive must pause
 // (DeviceLost) until a gamepad is connected or a button is pressed on another connected pad, which is
 // then adopted (the start screen's DeviceChoice is updated).
@@ -19,9 +20,9 @@ namespace sc {
 
 enum class DriveInputState { ready, waiting_for_gamepad, device_lost };
 
-class FreeDriveInput {
+class DriveInput {
  public:
-  explicit FreeDriveInput(DeviceChoice& device);
+  explicit DriveInput(DeviceChoice& device);
 
   // Reads one fixed-step input. Call once per Screen::update().
   void update(const FrameInput& input);
