@@ -1,8 +1,9 @@
 #include "teaching/tasks/parking_steps.hpp"
 
+#include <algorithm>
 #include <cmath>
 
-#include "engine/parking/parking_expert.hpp"
+#include "engine/parking/parking_replay.hpp"
 
 namespace sc {
 
@@ -42,18 +43,12 @@ std::vector<ParkingAction> control_rate_actions(const ParkingTrial& trial) {
   return out;
 }
 
+// The observation before every control step and after the last, from the shared replay.
 std::vector<ParkingObservation> simulate_states(const ParkingTrial& trial) {
-  ParkingSim sim(trial.scenario);
-  std::vector<ParkingObservation> states{sim.observation()};
-  const bool substeps = trial.control_hz != parking::kControlHz;
-  const std::size_t per = substeps ? parking::kSubstepsPerAction : 1;
-  for (std::size_t i = 0; i + per <= trial.actions.size() && !sim.done(); i += per) {
-    if (substeps)
-      sim.step_substeps({trial.actions[i], trial.actions[i + 1], trial.actions[i + 2]});
-    else
-      sim.step(trial.actions[i]);
-    states.push_back(sim.observation());
-  }
+  const Pose goal = goal_pose(trial.scenario);
+  std::vector<ParkingObservation> states{make_observation(initial_vehicle_state(trial.scenario), goal)};
+  for (const ParkingReplayStep& step : replay_parking_trial(trial).steps)
+    states.push_back(make_observation(step.vehicle, goal));
   return states;
 }
 
@@ -64,8 +59,7 @@ StepSequence parking_step_sequence(const ParkingTrial& trial) {
   const bool have_states = trial.states.size() >= actions.size() && !trial.states.empty();
   std::vector<ParkingObservation> states = have_states ? trial.states : simulate_states(trial);
   // An episode ends at success or collision: actions recorded after that never moved the car.
-  if (states.size() < actions.size()) actions.resize(states.size() > 0 ? states.size() - 1 : 0);
-  if (actions.empty()) return parking_step_sequence(states, actions);
+  if (states.size() < actions.size()) actions.resize(states.size() - 1);
   return parking_step_sequence(states, actions);
 }
 
