@@ -3,19 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<std::pair<int, int>>& parts) {
-  Segmentation s;
-  int t = 0;
-  for (const auto& [m, len] : parts) {
-    s.segments.push_back({m, t, t + len});
-    t += len;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<std::pair<int, int>>& parts) { return test::segments_of(parts); }
 
 TEST(CurriculumJson, RoundTripsEveryCondition) {
   CurriculumInputs in;

@@ -5,20 +5,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
 // Segmentation from (skill, length) pairs laid end to end.
-Segmentation seq(const std::vector<std::pair<int, int>>& parts) {
-  Segmentation s;
-  int t = 0;
-  for (const auto& [m, len] : parts) {
-    s.segments.push_back({m, t, t + len});
-    t += len;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<std::pair<int, int>>& parts) { return test::segments_of(parts); }
 
 // A pool where (0,1,2) is the most frequent 3-gram containing 1, and skill 1 has many distinct segments.
 std::vector<Segmentation> pool() {

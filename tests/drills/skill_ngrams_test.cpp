@@ -3,19 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<int>& skills) {
-  Segmentation s;
-  int t = 0;
-  for (int m : skills) {
-    s.segments.push_back({m, t, t + 5});
-    t += 5;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 5); }
 
 TEST(SkillNgramTable, CountsConsecutiveSkillsOverAllExpertSequences) {
   const SkillNgramTable table({seq({1, 2, 3, 4}), seq({1, 2, 3}), seq({2, 3, 4}), seq({5, 2, 3})}, 3);

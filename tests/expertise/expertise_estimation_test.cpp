@@ -6,19 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<int>& skills) {
-  Segmentation s;
-  int t = 0;
-  for (int m : skills) {
-    s.segments.push_back({m, t, t + 3});
-    t += 3;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 3); }
 
 ExpertiseTrial trial(int scenario, const std::vector<int>& expert, const std::vector<int>& student, double reward) {
   return {scenario, seq(expert), seq(student), reward};

@@ -3,19 +3,12 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<int>& skills) {
-  Segmentation s;
-  int t = 0;
-  for (int m : skills) {
-    s.segments.push_back({m, t, t + 2});
-    t += 2;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 2); }
 
 TEST(LatestEvidenceExpertise, NewerEvidenceReplacesOlderPerSkill) {
   // Pre-test: skill 0 missed (weakest), skill 1 missed later in the sequence, skill 2 fine.

@@ -14,29 +14,10 @@
 #include "engine/parking/parking_trial.hpp"
 #include "engine/render/rgba_image.hpp"
 #include "tests/support/golden_image.hpp"
+#include "tests/support/run_skillcoach.hpp"
 
 namespace sc {
 namespace {
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run(const std::string& arguments) {
-  const char* binary = std::getenv("SKILLCOACH_BINARY");
-  if (binary == nullptr) throw std::runtime_error("SKILLCOACH_BINARY is not set");
-  // Built with append: g++ 12 reports a false -Wrestrict for "literal" + std::string chains.
-  std::string command = "'";
-  command.append(binary).append("' ").append(arguments).append(" 2>&1");
-  FILE* pipe = popen(command.c_str(), "r");
-  RunResult result;
-  std::array<char, 512> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return result;
-}
 
 std::string quoted(const std::filesystem::path& p) {
   std::string text = "'";
@@ -68,7 +49,7 @@ int count_colour(const RgbaImage& image, int r, int g, int b) {
 
 TEST(RenderCommand, DrawsTheTrialWithTheReferenceLook) {
   const auto out = test::test_output_dir() / "render_plain.png";
-  const RunResult r = run("render --task parking --trajectory " + quoted(learner_trial_file()) + " --out " +
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(learner_trial_file()) + " --out " +
                           quoted(out) + " --size 800x450");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const RgbaImage image = read_png(out);
@@ -83,8 +64,8 @@ TEST(RenderCommand, ExpertOverlayAddsTheGhostRibbon) {
   const auto plain = test::test_output_dir() / "render_plain_for_overlay.png";
   const auto overlay = test::test_output_dir() / "render_overlay.png";
   const std::string trial = quoted(learner_trial_file());
-  ASSERT_EQ(run("render --task parking --trajectory " + trial + " --out " + quoted(plain)).exit_code, 0);
-  const RunResult r = run("render --task parking --trajectory " + trial + " --out " + quoted(overlay) +
+  ASSERT_EQ(test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(plain)).exit_code, 0);
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(overlay) +
                           " --overlay expert");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::ImageDifference diff = test::compare_images(read_png(overlay), read_png(plain), 8);
@@ -95,7 +76,7 @@ TEST(RenderCommand, ExpertOverlayAddsTheGhostRibbon) {
 TEST(RenderCommand, BadTrialFileIsOneLineExitTwo) {
   const auto bad = test::test_output_dir() / "render_bad_trial.json";
   std::ofstream(bad) << R"({"task":"parking","scenario":{"heading0":"north","goal":{"spot":3}},"actions":[]})";
-  const RunResult r = run("render --task parking --trajectory " + quoted(bad) + " --out /tmp/never.png");
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(bad) + " --out /tmp/never.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("render_bad_trial.json"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("heading0"), std::string::npos) << r.output;
@@ -105,9 +86,9 @@ TEST(RenderCommand, BadTrialFileIsOneLineExitTwo) {
 TEST(FreeDriveScreen, HeadlessScreenshotIsDeterministic) {
   const auto a = test::test_output_dir() / "free_drive_a.png";
   const auto b = test::test_output_dir() / "free_drive_b.png";
-  const RunResult r = run("screenshot --screen free_drive --size 1280x720 --out " + quoted(a));
+  const test::CommandResult r = test::run_skillcoach("screenshot --screen free_drive --size 1280x720 --out " + quoted(a));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  ASSERT_EQ(run("screenshot --screen free_drive --size 1280x720 --out " + quoted(b)).exit_code, 0);
+  ASSERT_EQ(test::run_skillcoach("screenshot --screen free_drive --size 1280x720 --out " + quoted(b)).exit_code, 0);
   const RgbaImage image = read_png(a);
   const test::ImageDifference diff = test::compare_images(image, read_png(b), 0);
   EXPECT_TRUE(diff.same_size);

@@ -12,27 +12,10 @@
 
 #include "engine/render/rgba_image.hpp"
 #include "tests/support/golden_image.hpp"
+#include "tests/support/run_skillcoach.hpp"
 
 namespace sc::test {
 namespace {
-
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run(const std::string& arguments, const std::string& env = "") {
-  const char* binary = std::getenv("SKILLCOACH_BINARY");
-  if (binary == nullptr) throw std::runtime_error("SKILLCOACH_BINARY is not set");
-  const std::string command = env + " '" + binary + "' " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  RunResult result;
-  std::array<char, 512> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return result;
-}
 
 int line_count(const std::string& text) {
   int lines = 0;
@@ -42,15 +25,15 @@ int line_count(const std::string& text) {
 
 TEST(AppScreens, StartScreenMatchesGolden) {
   const auto out = test_output_dir() / "start_screen.png";
-  const RunResult r = run("screenshot --screen start --size 1280x720 --out '" + out.string() + "'");
+  const CommandResult r = run_skillcoach("screenshot --screen start --size 1280x720 --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(matches_golden(read_png(out), "app/start_screen"));
 }
 
 TEST(AppScreens, ScreenshotIsDeterministicAcrossRuns) {
   const auto a = test_output_dir() / "start_a.png", b = test_output_dir() / "start_b.png";
-  ASSERT_EQ(run("screenshot --screen start --size 640x360 --out '" + a.string() + "'").exit_code, 0);
-  ASSERT_EQ(run("screenshot --screen start --size 640x360 --frames 5 --out '" + b.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_skillcoach("screenshot --screen start --size 640x360 --out '" + a.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_skillcoach("screenshot --screen start --size 640x360 --frames 5 --out '" + b.string() + "'").exit_code, 0);
   const ImageDifference diff = compare_images(read_png(a), read_png(b), 0);
   EXPECT_TRUE(diff.same_size);
   EXPECT_EQ(diff.differing_pixels, 0u);
@@ -59,7 +42,7 @@ TEST(AppScreens, ScreenshotIsDeterministicAcrossRuns) {
 TEST(AppScreens, DemoWritesAPngAndPrintsItsPath) {
   const auto out = test_output_dir() / "demo.png";
   std::filesystem::remove(out);
-  const RunResult r = run("demo --out '" + out.string() + "'");
+  const CommandResult r = run_skillcoach("demo --out '" + out.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find(out.string()), std::string::npos) << r.output;
   EXPECT_EQ(read_png(out).width, 1280);
@@ -69,7 +52,7 @@ TEST(AppScreens, NoDisplayFallsBackToTheDemoAndSaysSo) {
   const auto dir = test_output_dir() / "no_display";
   std::filesystem::create_directories(dir);
   std::filesystem::remove(dir / "skillcoach-demo.png");
-  const RunResult r = run("", "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY");
+  const CommandResult r = run_skillcoach("", "cd '" + dir.string() + "' && env -u DISPLAY -u WAYLAND_DISPLAY");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("no display"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("skillcoach-demo.png"), std::string::npos) << r.output;
@@ -77,7 +60,7 @@ TEST(AppScreens, NoDisplayFallsBackToTheDemoAndSaysSo) {
 }
 
 TEST(AppScreens, UnknownScreenIsOneLineExitTwo) {
-  const RunResult r = run("screenshot --screen nowhere --out /tmp/x.png");
+  const CommandResult r = run_skillcoach("screenshot --screen nowhere --out /tmp/x.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("nowhere"), std::string::npos);
@@ -86,21 +69,21 @@ TEST(AppScreens, UnknownScreenIsOneLineExitTwo) {
 
 TEST(AppScreens, MissingShadersAndFontsAreOneLineExitTwo) {
   const auto out = test_output_dir() / "never.png";
-  RunResult r = run("screenshot --out '" + out.string() + "'", "SKILLCOACH_SHADER_DIR=/nonexistent/shaders");
+  CommandResult r = run_skillcoach("screenshot --out '" + out.string() + "'", "SKILLCOACH_SHADER_DIR=/nonexistent/shaders");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("/nonexistent/shaders/scene.vert"), std::string::npos) << r.output;
-  r = run("screenshot --out '" + out.string() + "'", "SKILLCOACH_ASSET_DIR=/nonexistent/assets");
+  r = run_skillcoach("screenshot --out '" + out.string() + "'", "SKILLCOACH_ASSET_DIR=/nonexistent/assets");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("/nonexistent/assets/fonts/DejaVuSans.ttf"), std::string::npos) << r.output;
 }
 
 TEST(AppScreens, BadSizeAndBadBackendAreOneLineExitTwo) {
-  RunResult r = run("screenshot --size 12x-4 --out /tmp/x.png");
+  CommandResult r = run_skillcoach("screenshot --size 12x-4 --out /tmp/x.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
-  r = run("screenshot --out /tmp/x.png", "SKILLCOACH_GL=vulkan");
+  r = run_skillcoach("screenshot --out /tmp/x.png", "SKILLCOACH_GL=vulkan");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("SKILLCOACH_GL"), std::string::npos) << r.output;

@@ -4,20 +4,13 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
+#include "tests/support/segmentation_builders.hpp"
 
 namespace sc {
 namespace {
 
 // An expert segmentation with the given skill sequence, 4 steps per segment.
-Segmentation seq(const std::vector<int>& skills) {
-  Segmentation s;
-  int t = 0;
-  for (int m : skills) {
-    s.segments.push_back({m, t, t + 4});
-    t += 4;
-  }
-  return s;
-}
+Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 4); }
 
 TEST(DiverseScenarioSelection, GreedyPicksTheCoveringSet) {
   // 1 covers three skills, then 2 adds {3,4}, then 4 adds {5}: all six skills with three scenarios.

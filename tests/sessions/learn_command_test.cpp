@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "teaching/records/learner_store.hpp"
+#include "tests/support/run_skillcoach.hpp"
 
 namespace sc {
 namespace {
@@ -22,32 +23,12 @@ namespace {
 namespace fs = std::filesystem;
 using records::TrialKind;
 
-std::string binary() {
-  const char* b = std::getenv("SKILLCOACH_BINARY");
-  return b ? b : "skillcoach";
-}
-
 fs::path fresh_dir(const std::string& name) {
   const char* out = std::getenv("SKILLCOACH_TEST_OUTPUT");
   fs::path dir = fs::path(out ? out : "/tmp") / ("learn_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
-}
-
-struct CommandRun {
-  int status = -1;
-  std::string output;
-};
-
-CommandRun run(const std::string& args) {
-  CommandRun r;
-  FILE* pipe = popen((binary() + " " + args + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-  r.status = pclose(pipe);
-  return r;
 }
 
 long count_kind(const std::vector<records::StoredTrial>& trials, TrialKind kind) {
@@ -87,16 +68,16 @@ void expect_complete_session(const fs::path& dir, const std::string& learner, co
 
 TEST(LearnCommand, ParkingSessionEndToEnd) {
   const fs::path dir = fresh_dir("parking");
-  const CommandRun r = run("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
-  ASSERT_EQ(r.status, 0) << r.output;
+  const test::CommandResult r = test::run_skillcoach("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "parking");
 }
 
 TEST(LearnCommand, WritingSessionEndToEnd) {
   const fs::path dir = fresh_dir("writing");
-  const CommandRun r = run("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
-  ASSERT_EQ(r.status, 0) << r.output;
+  const test::CommandResult r = test::run_skillcoach("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "writing");
 }
@@ -110,7 +91,7 @@ int run_and_kill(const std::string& args, int kills_after) {
   if (pid == 0) {
     dup2(out[1], STDOUT_FILENO);
     close(out[0]);
-    const std::string command = binary() + " " + args;
+    const std::string command = test::skillcoach_binary() + " " + args;
     execl("/bin/sh", "sh", "-c", ("exec " + command).c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
@@ -150,8 +131,8 @@ TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStop
     EXPECT_EQ(point->session.progress.item_index, stored - 3);  // the next practice slot
     EXPECT_EQ(point->trials_done, static_cast<int>(trials.size()));
   }
-  const CommandRun resumed = run(args);
-  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  const test::CommandResult resumed = test::run_skillcoach(args);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("resumed session 1 at round 1, drills"), std::string::npos) << resumed.output;
   expect_complete_session(dir, "crash", "parking", "skills");
   records::LearnerStore store(dir);

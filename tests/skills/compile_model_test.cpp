@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "engine/core/error.hpp"
+#include "tests/support/scratch_files.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/skills/model_file.hpp"
@@ -16,22 +17,7 @@
 namespace sc {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) {
-  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  auto base = std::filesystem::path(dir ? dir : "/tmp") / "compile_model_test";
-  std::filesystem::create_directories(base);
-  return base / name;
-}
-
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const std::filesystem::path& p, const std::string& b) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out.write(b.data(), static_cast<std::streamsize>(b.size()));
-}
+std::filesystem::path scratch(const std::string& name) { return test::scratch_path("compile_model_test", name); }
 
 std::vector<StepSequence> data() {
   std::vector<StepSequence> out;
@@ -92,7 +78,7 @@ TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
   }
   // Saving the loaded model reproduces the file byte for byte.
   again.save(scratch("resaved.scm"));
-  EXPECT_EQ(bytes_of(path), bytes_of(scratch("resaved.scm")));
+  EXPECT_EQ(test::read_bytes(path), test::read_bytes(scratch("resaved.scm")));
 
   const Json sidecar = read_json_file(model_sidecar_path(path));
   EXPECT_EQ(sidecar.at("format_version"), kModelFormatVersion);
@@ -109,21 +95,21 @@ TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
 
 TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
   const auto path = trained_model();
-  const std::string good = bytes_of(path);
+  const std::string good = test::read_bytes(path);
 
   expect_load_error(scratch("missing.scm"), "no such model file");
   const auto truncated = scratch("truncated.scm");
-  write_bytes(truncated, good.substr(0, good.size() - 100));
+  test::write_bytes(truncated, good.substr(0, good.size() - 100));
   expect_load_error(truncated, "checksum");
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
   const auto corrupt = scratch("corrupt.scm");
-  write_bytes(corrupt, flipped);
+  test::write_bytes(corrupt, flipped);
   expect_load_error(corrupt, "corrupt");
   std::string newer = good;
   newer[8] = static_cast<char>(kModelFormatVersion + 1);
   const auto future = scratch("future.scm");
-  write_bytes(future, newer);
+  test::write_bytes(future, newer);
   expect_load_error(future, "newer than this program supports");
 
   expect_load_error(path, "trained for task \"parking\", expected \"writing\"", "writing");

@@ -13,16 +13,12 @@
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/segmentation_metrics.hpp"
 #include "teaching/skills/synthetic_sequences.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) {
-  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  auto base = std::filesystem::path(dir ? dir : "/tmp") / "compile_trainer_test";
-  std::filesystem::create_directories(base);
-  return base / name;
-}
+std::filesystem::path scratch(const std::string& name) { return test::scratch_path("compile_trainer_test", name); }
 
 std::vector<StepSequence> steps_of(const std::vector<PlantedSequence>& planted) {
   std::vector<StepSequence> out;
@@ -45,11 +41,6 @@ CompileConfig tiny_config() {
   c.patience = 100;
   c.seed = 7;
   return c;
-}
-
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 TEST(CompileTrainer, RecoversPlantedBoundariesAndConsistentSkills) {
@@ -108,7 +99,7 @@ TEST(CompileTrainer, SameSeedGivesSameModelBytes) {
   auto run = [&](std::uint64_t seed, const std::string& name) {
     c.seed = seed;
     CompileTrainer(c).train(data, data).save(scratch(name));
-    return bytes_of(scratch(name));
+    return test::read_bytes(scratch(name));
   };
   const std::string a = run(1, "a.scm"), b = run(1, "b.scm"), other = run(2, "c.scm");
   ASSERT_GT(a.size(), 1000u);

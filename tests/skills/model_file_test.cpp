@@ -7,26 +7,12 @@
 #include <iterator>
 
 #include "engine/core/error.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) {
-  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  auto base = std::filesystem::path(dir ? dir : "/tmp") / "model_file_test";
-  std::filesystem::create_directories(base);
-  return base / name;
-}
-
-std::string bytes_of(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-void write_bytes(const std::filesystem::path& p, const std::string& b) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out.write(b.data(), static_cast<std::streamsize>(b.size()));
-}
+std::filesystem::path scratch(const std::string& name) { return test::scratch_path("model_file_test", name); }
 
 ModelFileContents sample() {
   ModelFileContents c;
@@ -58,38 +44,38 @@ TEST(ModelFile, RoundTripsExactly) {
   EXPECT_EQ(back.tensors[0].shape, (std::vector<std::int64_t>{2, 3}));
   EXPECT_EQ(back.tensors[1].values, sample().tensors[1].values);
   write_model_file(scratch("again.scm"), sample());
-  EXPECT_EQ(bytes_of(p), bytes_of(scratch("again.scm")));  // deterministic bytes
+  EXPECT_EQ(test::read_bytes(p), test::read_bytes(scratch("again.scm")));  // deterministic bytes
 }
 
 TEST(ModelFile, RejectsBrokenFilesWithOneLineErrors) {
   const auto good = scratch("good.scm");
   write_model_file(good, sample());
-  const std::string b = bytes_of(good);
+  const std::string b = test::read_bytes(good);
 
   expect_error(scratch("does_not_exist.scm"), "no such model file");
 
   const auto truncated = scratch("truncated.scm");
-  write_bytes(truncated, b.substr(0, b.size() / 2));
+  test::write_bytes(truncated, b.substr(0, b.size() / 2));
   expect_error(truncated, "checksum");
 
   const auto tiny = scratch("tiny.scm");
-  write_bytes(tiny, b.substr(0, 12));
+  test::write_bytes(tiny, b.substr(0, 12));
   expect_error(tiny, "truncated");
 
   std::string flipped = b;
   flipped[b.size() - 20] = static_cast<char>(flipped[b.size() - 20] ^ 0x40);
   const auto corrupt = scratch("corrupt.scm");
-  write_bytes(corrupt, flipped);
+  test::write_bytes(corrupt, flipped);
   expect_error(corrupt, "corrupt");
 
   std::string newer = b;
   newer[8] = 99;  // format version field
   const auto future = scratch("future.scm");
-  write_bytes(future, newer);
+  test::write_bytes(future, newer);
   expect_error(future, "newer than this program supports");
 
   const auto foreign = scratch("foreign.scm");
-  write_bytes(foreign, "{\"this\": \"is json\"}");
+  test::write_bytes(foreign, "{\"this\": \"is json\"}");
   expect_error(foreign, "not a SkillCoach model file");
 }
 

@@ -10,6 +10,7 @@
 
 #include "engine/core/json_file.hpp"
 #include "engine/writing/writing_trial.hpp"
+#include "tests/support/run_skillcoach.hpp"
 
 namespace sc::writing {
 namespace {
@@ -21,33 +22,14 @@ std::filesystem::path scratch(const std::string& name) {
   return dir / name;
 }
 
-struct CliResult {
-  int status = -1;
-  std::string out;
-};
-
-CliResult run_cli(const std::string& args) {
-  const char* binary = std::getenv("SKILLCOACH_BINARY");
-  EXPECT_NE(binary, nullptr);
-  CliResult r;
-  FILE* pipe = popen((std::string(binary ? binary : "skillcoach") + " " + args + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return r;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) r.out.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 TEST(ScoreCommand, GoldTrialScoresZeroAndHalfAWordAboutHalf) {
   const WritingScenario scenario{"b-a-t-", AlphabetKind::Classic, {}};
   auto trial = gold_trial(scenario);
   const auto gold_file = scratch("gold.json");
   write_writing_trial(gold_file, trial);
-  const CliResult gold = run_cli("score --task writing " + gold_file.string());
-  ASSERT_EQ(gold.status, 0) << gold.out;
-  const Json doc = parse_json_text(gold.out, "stdout");
+  const test::CommandResult gold = test::run_skillcoach("score --task writing " + gold_file.string());
+  ASSERT_EQ(gold.exit_code, 0) << gold.output;
+  const Json doc = parse_json_text(gold.output, "stdout");
   EXPECT_EQ(doc["score"].get<double>(), 0.0);
   EXPECT_EQ(doc["recall"].get<double>(), 1.0);
   EXPECT_EQ(doc["scenario"]["word"], "b-a-t-");
@@ -57,9 +39,9 @@ TEST(ScoreCommand, GoldTrialScoresZeroAndHalfAWordAboutHalf) {
   trial.score = -0.5;
   const auto half_file = scratch("half.json");
   write_writing_trial(half_file, trial);
-  const CliResult half = run_cli("score --task writing " + half_file.string());
-  ASSERT_EQ(half.status, 0) << half.out;
-  const Json h = parse_json_text(half.out, "stdout");
+  const test::CommandResult half = test::run_skillcoach("score --task writing " + half_file.string());
+  ASSERT_EQ(half.exit_code, 0) << half.output;
+  const Json h = parse_json_text(half.output, "stdout");
   EXPECT_NEAR(h["score"].get<double>(), -0.5, 0.1);
   EXPECT_EQ(h["precision"].get<double>(), 1.0);
   EXPECT_EQ(h["stored_score"].get<double>(), -0.5);
@@ -68,9 +50,9 @@ TEST(ScoreCommand, GoldTrialScoresZeroAndHalfAWordAboutHalf) {
 TEST(ScoreCommand, BadInputExitsTwoWithOneLine) {
   const auto bad = scratch("bad.json");
   std::ofstream(bad) << R"({"task": "writing", "scenario": {"word": "ab"}, "points": [[1, "x"]]})";
-  const CliResult r = run_cli("score --task writing " + bad.string());
-  EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.out, "skillcoach: error: " + bad.string() + ": $.points[0][1]: expected a number, got string\n");
+  const test::CommandResult r = test::run_skillcoach("score --task writing " + bad.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "skillcoach: error: " + bad.string() + ": $.points[0][1]: expected a number, got string\n");
 }
 
 }  // namespace

@@ -1,0 +1,26 @@
+#include "tests/support/scratch_files.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+namespace sc::test {
+
+std::filesystem::path scratch_path(std::string_view group, std::string_view name) {
+  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  const auto base = std::filesystem::path(dir != nullptr ? dir : "/tmp") / group;
+  std::filesystem::create_directories(base);
+  return base / name;
+}
+
+std::string read_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_bytes(const std::filesystem::path& file, std::string_view bytes) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+}  // namespace sc::test

@@ -1,0 +1,15 @@
+#pragma once
+// Scratch files for tests: a per-test-group folder under $SKILLCOACH_TEST_OUTPUT (or /tmp), and whole-file
+// byte reads/writes for tests that damage files on purpose (truncate, flip bytes) and check they are refused.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace sc::test {
+
+// <output>/<group>/<name>, creating <output>/<group>.
+std::filesystem::path scratch_path(std::string_view group, std::string_view name);
+std::string read_bytes(const std::filesystem::path& file);
+void write_bytes(const std::filesystem::path& file, std::string_view bytes);
+
+}  // namespace sc::test
