@@ -92,7 +92,10 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
     ctx->saved_data["gates"] = gates;
     ctx->saved_data["c_raw"] = c_raw;
     ctx->saved_data["tanh_c"] = tanh_c;
-    ctx->saved_data["h_out"] = h_out;
+    // h_out is also this node's OUTPUT: storing that very tensor here would make output -> grad_fn -> ctx ->
+    // output a reference cycle that leaks every iteration's whole graph (14 MB per iteration on the tiny
+    // test config, 5.7 GB after 400 parking iterations). A detached alias shares the storage, not the cycle.
+    ctx->saved_data["h_out"] = h_out.detach();
     ctx->saved_data["c_out"] = c_out;
     ctx->saved_data["active"] = local.active;
     ctx->saved_data["rows"] = rows;
