@@ -129,5 +129,29 @@ TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
   expect_load_error(foreign, "not a CompILE model");
 }
 
+TEST(CompileModel, ReplacingTheFileMidRunLeavesTheLoadedModelIntact) {
+  // A model file replaced while the app runs (a retrain saving over it, or a half-copied file): the loaded
+  // extractor keeps giving the same skills (nothing is read lazily), a retrain's save is atomic (readers see
+  // the old or the new model, never a mix), and a broken replacement fails only the next load, clearly.
+  const auto path = trained_model();
+  const auto trajectories = data();
+  const CompileExtractor running = CompileExtractor::load(path, "parking");
+  const auto before = running.extract_all(trajectories);
+  const std::string original = test::read_bytes(path);
+
+  CompileConfig other = CompileModel::load(path).config();
+  other.seed += 1;
+  other.iterations = 1;
+  CompileTrainer(other).train(data(), {}).save(path);
+  EXPECT_NE(test::read_bytes(path), original);
+  EXPECT_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  EXPECT_EQ(running.extract_all(trajectories), before);
+  EXPECT_NO_THROW(CompileModel::load(path, "parking"));
+
+  test::write_bytes(path, original.substr(0, original.size() / 2));
+  EXPECT_EQ(running.extract_all(trajectories), before);
+  expect_load_error(path, "truncated model file");
+}
+
 }  // namespace
 }  // namespace sc
