@@ -1,0 +1,42 @@
+#pragma once
+// "Diagnosis explained": why the trainer chose the skills it drilled in round 1. Alg. 2 is recomputed
+// (teaching/expertise) from the stored pre-test trials against the expert's segmentation of the same
+// scenarios, and for each targeted skill the pre-test trials that missed it are listed with their Δ
+// (Δ = −r / j: r the trial's reward, j the skill's position in the expert's sequence). The recomputed
+// expertise is compared with the stored diagnosis, so a model or extractor change since the session shows.
+#include <string>
+#include <vector>
+
+#include "teaching/review/trial_review.hpp"
+
+namespace sc::review {
+
+struct MissedSkillTrial {
+  int seq = 0;          // the pre-test trial
+  int position = 0;     // j, 1-based position of the skill in the expert's sequence
+  double reward = 0.0;  // r of the learner's trial
+  double delta = 0.0;   // Δ = −r / j
+};
+
+struct SkillExplanation {
+  int skill = 0;
+  std::string description;
+  double expertise = 0.0;  // recomputed E_m = −Σ Δ
+  int occurrences = 0;     // how often the expert used the skill in these scenarios
+  std::vector<MissedSkillTrial> missed;  // trial order
+};
+
+struct DiagnosisExplanation {
+  int round = 1;
+  std::vector<int> stored_targets;      // as the trainer stored them
+  std::vector<int> recomputed_targets;  // Alg. 2 now
+  std::vector<SkillExplanation> skills;  // the stored targets, in their order
+  int pretest_trials = 0;
+  bool matches_stored = false;  // recomputed expertise equals the stored vector (to 1e-9) with the same targets
+  std::string extractor;        // the stored diagnosis's extractor name
+};
+
+// Throws InputError when the session has no pre-test trials or no round-1 diagnosis.
+DiagnosisExplanation explain_diagnosis(const SessionReview& review);
+
+}  // namespace sc::review
