@@ -1,0 +1,28 @@
+#pragma once
+// Glue between the review's data (teaching/review) and its painters (engine/review_view), shared by the
+// Review screens and `skillcoach report`: plain conversions, no decisions.
+#include <string>
+#include <vector>
+
+#include "engine/review_view/review_chart.hpp"
+#include "engine/review_view/review_images.hpp"
+#include "engine/review_view/review_picture.hpp"
+#include "teaching/review/before_after.hpp"
+#include "teaching/review/expertise_rounds.hpp"
+#include "teaching/review/trial_review.hpp"
+
+namespace sc {
+
+review_view::ReviewPath review_path(const review::TrialTrack& track, const std::vector<review::SkillSpan>& spans);
+review_view::TrialPicture trial_picture(const review::TrialReview& trial);
+// Title, outcome lines, the legend of every skill in the picture (learner's, expert's and ghost's) and the plot.
+review_view::TrialImageText trial_image_text(const std::string& learner, const review::TrialReview& trial);
+review_view::RewardPlot reward_plot(const review::TrialReview& trial);
+review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds);
+// The group's trials (already reviewed: `trials` indexed by seq lookup) as one overlay.
+review_view::BeforeAfterPicture before_after_picture(const review::BeforeAfterGroup& group,
+                                                     const std::vector<review::TrialReview>& trials);
+std::vector<std::string> before_after_lines(const review::BeforeAfterGroup& group,
+                                            const std::vector<review::TrialReview>& trials);
+
+}  // namespace sc

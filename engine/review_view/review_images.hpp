@@ -1,0 +1,34 @@
+#pragma once
+// The review pictures as offscreen images (what `skillcoach report` writes and the golden tests compare):
+// the world picture on the left, titles, legend and the reward plot on the right, text in the app's fonts.
+#include <string>
+#include <vector>
+
+#include "engine/render/gl_context.hpp"
+#include "engine/render/rgba_image.hpp"
+#include "engine/review_view/review_chart.hpp"
+#include "engine/review_view/review_picture.hpp"
+
+namespace sc::review_view {
+
+struct LegendEntry {
+  int skill = 0;
+  std::string label;  // plain words
+};
+
+struct TrialImageText {
+  std::string title;                // "Ada · parking · pre-test, trial 2 (round 1)"
+  std::vector<std::string> lines;   // outcome, score, device ...
+  std::vector<LegendEntry> legend;  // the skills that appear in the picture
+  RewardPlot plot;
+};
+
+RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, const TrialImageText& text, int width,
+                             int height);
+RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture& picture, const std::string& title,
+                                    const std::vector<std::string>& lines, int width, int height);
+// Height follows the number of skills and rounds.
+RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart& chart, const std::string& title,
+                                       int width);
+
+}  // namespace sc::review_view
