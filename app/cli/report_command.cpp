@@ -1,0 +1,49 @@
+// skillcoach report: an instructor's report of one learner (all sessions, or one) from the learner database,
+// opened read-only: every trial's picture, before/after overlays, the expertise chart, trials.csv,
+// trials.json and a self-contained report.html. The work is in app/gui/screens/review_report_writer.cpp.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "app/cli/command_registry.hpp"
+#include "app/gui/screens/review_report_writer.hpp"
+#include "teaching/records/data_dir.hpp"
+
+namespace sc::cli {
+namespace {
+
+struct ReportOptions {
+  std::string data_dir;
+  std::string learner;
+  std::int64_t session = 0;
+  std::string out;
+};
+
+CommandRunner setup(CLI::App& sub) {
+  auto options = std::make_shared<ReportOptions>();
+  sub.add_option("--data-dir", options->data_dir,
+                 "Directory holding skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  sub.add_option("--learner", options->learner, "Learner's name")->required();
+  CLI::Option* session =
+      sub.add_option("--session", options->session, "Only this session id (default: every session of the learner)");
+  sub.add_option("--out", options->out, "Folder to write the report into (created)")->required();
+  return [options, session] {
+    ReportRequest request;
+    request.data_dir = options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
+    request.learner = options->learner;
+    if (session->count() > 0) request.session = options->session;
+    request.out = options->out;
+    const ReportResult result = write_learner_report(request);
+    std::printf("report of %s: %d session(s), %d trials, %zu files in %s\n", options->learner.c_str(), result.sessions,
+                result.trials, result.files.size(), options->out.c_str());
+    return 0;
+  };
+}
+
+const CommandRegistration kReg{{"report", "Write an instructor's report of a learner (pictures, CSV/JSON, HTML)",
+                                "skillcoach report --data-dir DIR --learner Ada --out report/", setup}};
+
+}  // namespace
+}  // namespace sc::cli

@@ -1,0 +1,125 @@
+#include "app/gui/screens/review_report_writer.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <memory>
+
+#include "app/gui/screens/review_pictures.hpp"
+#include "engine/core/error.hpp"
+#include "engine/render/gl_context.hpp"
+#include "teaching/review/review_report.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
+
+namespace sc {
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_file(const fs::path& file, const std::string& bytes) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) throw InputError(file.string(), "cannot be written");
+}
+
+std::string read_file(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+class ReportWriter {
+ public:
+  ReportWriter(const ReportRequest& request, ReportResult& result) : request_(request), result_(result) {}
+
+  review::ReportImage save(const RgbaImage& image, const std::string& file, const std::string& title) {
+    const fs::path path = request_.out / file;
+    write_png(path, image);
+    result_.files.push_back(path);
+    return {title, file, read_file(path)};
+  }
+
+  GlContext& context() {
+    if (!context_) context_ = create_offscreen_context_from_env(request_.image_width, request_.image_height);
+    return *context_;
+  }
+
+  const TaskKit& kit(const std::string& task) {
+    auto& kit = kits_[task];
+    if (!kit) kit = make_task_kit(task);
+    return *kit;
+  }
+
+  review::SessionReport session(const records::LearnerStore& store, const review::SessionListRow& row) {
+    review::SessionReport report;
+    report.row = row;
+    report.extractor_notice = kit(row.task).extractor_notice();
+    const review::SessionReview review(kit(row.task), review::load_session_record(store, row.session_id));
+    std::vector<review::TrialReview> trials;
+    for (const auto& t : review.record().trials) trials.push_back(review.trial(t.seq));
+    const std::string prefix = "session" + std::to_string(row.session_id) + "_";
+    for (const auto& t : trials) {
+      report.trials.push_back({row.session_id, t});
+      report.trial_images.push_back(save(
+          review_view::render_trial_image(context(), trial_picture(t), trial_image_text(row.learner, t),
+                                          request_.image_width, request_.image_height),
+          prefix + "trial" + std::to_string(t.stored.seq) + ".png", t.label));
+    }
+    for (const auto& group : review::before_after_groups(review.record()))
+      report.before_after.push_back(save(
+          review_view::render_before_after_image(context(), before_after_picture(group, trials),
+                                                 "Before / after: " + group.title, before_after_lines(group, trials),
+                                                 request_.image_width, request_.image_height),
+          prefix + "before_after_" + group.family + ".png", "Before / after: " + group.title));
+    const review::ExpertiseRounds rounds = review::expertise_rounds(review.kit(), review.record());
+    if (!rounds.rounds.empty())
+      report.expertise_chart = save(review_view::render_expertise_chart_image(
+                                        context(), expertise_chart(rounds), "Expertise per skill across rounds",
+                                        request_.image_width),
+                                    prefix + "expertise.png", "Expertise per skill across rounds");
+    try {
+      report.diagnosis = review::explain_diagnosis(review);
+    } catch (const InputError& e) {
+      report.diagnosis_note = e.what();
+    }
+    result_.trials += static_cast<int>(trials.size());
+    return report;
+  }
+
+ private:
+  const ReportRequest& request_;
+  ReportResult& result_;
+  std::unique_ptr<GlContext> context_;
+  std::map<std::string, std::unique_ptr<TaskKit>> kits_;
+};
+
+}  // namespace
+
+ReportResult write_learner_report(const ReportRequest& request) {
+  const records::LearnerStore store(request.data_dir, records::StoreOptions{.read_only = true});
+  const std::vector<std::int64_t> ids = review::learner_session_ids(store, request.learner);
+  if (request.session && std::find(ids.begin(), ids.end(), *request.session) == ids.end())
+    throw InputError(store.database_path().string(),
+                     "learner '" + request.learner + "' has no session " + std::to_string(*request.session));
+  std::vector<review::SessionListRow> rows;
+  for (const auto& row : review::session_rows(store.list_learners()))
+    if (row.learner == request.learner && (!request.session || row.session_id == *request.session)) rows.push_back(row);
+
+  std::error_code ec;
+  fs::create_directories(request.out, ec);
+  if (ec) throw InputError(request.out.string(), "cannot create the output folder (" + ec.message() + ")");
+  ReportResult result;
+  ReportWriter writer(request, result);
+  std::vector<review::SessionReport> sessions;
+  for (const auto& row : rows) sessions.push_back(writer.session(store, row));
+  result.sessions = static_cast<int>(sessions.size());
+
+  const fs::path csv = request.out / "trials.csv", json = request.out / "trials.json", html = request.out / "report.html";
+  write_file(csv, review::trials_csv(sessions));
+  write_json_file(json, review::trials_json(request.learner, sessions), 1);
+  write_file(html, review::report_html(request.learner, sessions));
+  result.files.insert(result.files.end(), {csv, json, html});
+  return result;
+}
+
+}  // namespace sc

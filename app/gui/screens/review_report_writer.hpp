@@ -1,0 +1,31 @@
+#pragma once
+// `skillcoach report`'s work: reads a learner's sessions from the database (read-only), reviews every trial,
+// renders the pictures offscreen and writes them with trials.csv, trials.json and report.html into `out`.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sc {
+
+struct ReportRequest {
+  std::filesystem::path data_dir;
+  std::string learner;
+  std::optional<std::int64_t> session;  // none: every session of the learner
+  std::filesystem::path out;
+  int image_width = 1280;
+  int image_height = 720;
+};
+
+struct ReportResult {
+  std::vector<std::filesystem::path> files;  // every file written, report.html last
+  int sessions = 0;
+  int trials = 0;
+};
+
+// Throws InputError (one line naming the file) for a missing/damaged database, an unknown learner or
+// session, a task without data, or an output that cannot be written. Never writes the database.
+ReportResult write_learner_report(const ReportRequest& request);
+
+}  // namespace sc
