@@ -17,6 +17,7 @@ struct ScreenshotOptions {
   std::string out;
   std::string size = "1280x720";
   int frames = 3;
+  std::string task = "parking";
 };
 
 CommandRunner setup(CLI::App& sub) {
@@ -27,11 +28,15 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--frames", options->frames, "Frames to render before capturing (at least 2)")
       ->capture_default_str()
       ->check(CLI::Range(2, 600));
+  sub.add_option("--task", options->task, "Task the trainer's screens show")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"parking", "writing"}));
   return [options] {
     ScreenshotRequest request;
     request.screen = options->screen;
     std::tie(request.width, request.height) = parse_size(options->size, "--size");
     request.frames = options->frames;
+    request.task = options->task == "writing" ? TaskKind::writing : TaskKind::parking;
     write_png(options->out, render_screen_offscreen(request));
     std::printf("%s\n", options->out.c_str());
     return 0;

@@ -14,6 +14,8 @@ RgbaImage render_screen_offscreen(const ScreenshotRequest& request) {
   auto context = create_offscreen_context_from_env(request.width, request.height);
   AppServices services;
   services.headless = true;
+  services.task = request.task;
+  if (request.task == TaskKind::writing) services.device.kind = DeviceKind::mouse_pen;
   ScreenHost host(*context, services, request.screen);
   const FrameInput input;  // no devices, mouse outside: nothing hovered
   for (int i = 0; i < std::max(2, request.frames); ++i) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "app/gui/app_services.hpp"
 #include "engine/render/rgba_image.hpp"
 
 namespace sc {
@@ -14,6 +15,7 @@ struct ScreenshotRequest {
   int width = 1280;
   int height = 720;
   int frames = 3;  // clamped to >= 2
+  TaskKind task = TaskKind::parking;  // the task the trainer's screens show
 };
 
 RgbaImage render_screen_offscreen(const ScreenshotRequest& request);

@@ -1,5 +1,6 @@
-// Golden screenshots of every screen of the trainer's flow (parking; deterministic: fixed seed, scripted
-// learner, fixed timestamps, fresh temporary database), rendered by the real program offscreen.
+// Golden screenshots of every screen of the trainer's flow (parking, and the writing trial screen; deterministic:
+// fixed seed, scripted learner, fixed timestamps, fresh temporary database), rendered by the real program
+// offscreen.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -23,6 +24,15 @@ TEST_P(LearnScreenGolden, MatchesGolden) {
                                            out.string() + "'");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
   EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen));
+}
+
+TEST(LearnScreenGolden, WritingTrialMatchesGolden) {
+  // A drill practice half-way: the ghost ribbon of the stitched drill, the scripted learner's ink over it.
+  const auto out = test_output_dir() / "learn_trial_writing.png";
+  const CommandResult shot =
+      run_skillcoach("screenshot --screen learn_trial --task writing --size 1280x720 --out '" + out.string() + "'");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  EXPECT_TRUE(matches_golden(read_png(out), "learn/learn_trial_writing"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Trainer, LearnScreenGolden,

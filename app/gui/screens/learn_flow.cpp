@@ -73,6 +73,18 @@ const char* screen_for_phase(SessionPhase phase) {
   return "learn_welcome";
 }
 
+std::string learn_phase_title(const TrainingSession& s, bool demo, bool practice_result) {
+  const auto count = [](int i, int n) { return std::to_string(i + 1) + " of " + std::to_string(n); };
+  if (practice_result) return "Practice";
+  switch (s.phase()) {
+    case SessionPhase::Pretest: return "Pre-test  " + count(s.item_index(), s.test_count());
+    case SessionPhase::Evaluation: return "Final test  " + count(s.item_index(), s.test_count());
+    case SessionPhase::Drills:
+      return std::string(demo ? "Drill demo  " : "Drill practice  ") + count(s.item_index(), s.practice_slot_count());
+    default: return "Trial";
+  }
+}
+
 std::string device_key(const DeviceChoice& device) {
   switch (device.kind) {
     case DeviceKind::gamepad: return "gamepad";

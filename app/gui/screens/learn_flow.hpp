@@ -47,6 +47,10 @@ LearnFlow& learn_flow(AppServices& services);
 // The screen that shows a session's current phase.
 const char* screen_for_phase(SessionPhase phase);
 
+// The trial screens' header: "Pre-test  2 of 5", "Drill demo  1 of 6", "Final test  3 of 5", or "Practice"
+// for the result of a practice trial.
+std::string learn_phase_title(const TrainingSession& s, bool demo, bool practice_result);
+
 // "keyboard", "mouse-joystick", "gamepad", "mouse" (the device column of the trials table).
 std::string device_key(const DeviceChoice& device);
 

@@ -3,7 +3,8 @@
 // expert's inputs — then the learner practises with the ghost path and their own trail; score, then "try
 // again" or "next"). Every finished trial goes to the TrainingSession at once, which commits it to the
 // learner database. Esc / gamepad Start pauses; an unplugged gamepad pauses with a message until a device
-// is back, and the trial continues where it was (nothing is lost).
+// is back, and the trial continues where it was (nothing is lost). Writing trials have their own screen
+// (learn_write_trial_screen.hpp), which this registration hands out when the task is writing.
 #include <imgui.h>
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "app/gui/screens/drive_input.hpp"
 #include "app/gui/screens/learn_flow.hpp"
 #include "app/gui/screens/learn_ui.hpp"
+#include "app/gui/screens/learn_write_trial_screen.hpp"
 #include "engine/core/error.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "engine/parking_view/driving_gauges.hpp"
@@ -47,7 +49,7 @@ class LearnTrialScreen final : public Screen {
   }
 
   void update(const FrameInput& frame, double dt) override {
-    if (!flow_.session() || services_.task != TaskKind::parking) return;
+    if (!flow_.session()) return;
     ticks_per_substep_ = std::max(1, static_cast<int>(std::lround(parking::kDt / dt)));
     input_.update(frame);
     confirm_ = confirm_ || learn_ui::confirm_pressed(frame);
@@ -71,10 +73,6 @@ class LearnTrialScreen final : public Screen {
       learn_ui::end_card();
       return;
     }
-    if (services_.task != TaskKind::parking) {
-      draw_writing_unavailable(ui);
-      return;
-    }
     const float s = ui.ui_scale;
     const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width), static_cast<float>(ui.height) - 56 * s};
     draw_scene(ui, viewport);
@@ -92,7 +90,6 @@ class LearnTrialScreen final : public Screen {
   // Sets up the run for the session's current phase and item.
   void prepare() {
     TrainingSession& s = session();
-    if (services_.task != TaskKind::parking) return;
     ghost_.reset();
     demo_pending_ = false;
     if (s.phase() == SessionPhase::Drills || retry_item_) {
@@ -202,27 +199,14 @@ class LearnTrialScreen final : public Screen {
     draw_driving_gauges(*ImGui::GetBackgroundDrawList(), layout, values, s);
   }
 
-  std::string phase_title() {
-    TrainingSession& s = session();
-    const auto count = [](int i, int n) { return std::to_string(i + 1) + " of " + std::to_string(n); };
-    if (stage_ == Stage::result && was_practice_) return "Practice";
-    switch (s.phase()) {
-      case SessionPhase::Pretest: return "Pre-test  " + count(s.item_index(), s.test_count());
-      case SessionPhase::Evaluation: return "Final test  " + count(s.item_index(), s.test_count());
-      case SessionPhase::Drills:
-        return std::string(stage_ == Stage::demo || demo_pending_ ? "Drill demo  " : "Drill practice  ") +
-               count(s.item_index(), s.practice_slot_count());
-      default: return "Trial";
-    }
-  }
-
   void draw_header(UiContext& ui) {
     const float s = ui.ui_scale;
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
     ImGui::Begin("learn_trial_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
     ImGui::PushFont(ui.fonts.bold);
-    ImGui::TextUnformatted(phase_title().c_str());
+    ImGui::TextUnformatted(learn_phase_title(session(), stage_ == Stage::demo || demo_pending_,
+                                             stage_ == Stage::result && was_practice_).c_str());
     ImGui::PopFont();
     ImGui::SameLine(0, 30 * s);
     if (stage_ == Stage::driving)
@@ -274,15 +258,6 @@ class LearnTrialScreen final : public Screen {
     learn_ui::end_card();
   }
 
-  void draw_writing_unavailable(UiContext& ui) {
-    learn_ui::begin_card(ui, "learn_trial_writing", 560.0f);
-    learn_ui::title(ui, "Writing trials");
-    ImGui::TextWrapped("Writing trials in the window are not part of this build yet. The writing flow runs headless: "
-                       "skillcoach learn --task writing.");
-    if (learn_ui::primary_button(ui, "Back")) ui.navigator.go_to("start");
-    learn_ui::end_card();
-  }
-
   AppServices& services_;
   LearnFlow& flow_;
   DriveInput input_;
@@ -308,7 +283,10 @@ class LearnTrialScreen final : public Screen {
 };
 
 const ScreenRegistration kReg{{"learn_trial", "Trainer: pre-test, drill demo and practice, evaluation trial",
-                               [](AppServices& services) { return std::make_unique<LearnTrialScreen>(services); }}};
+                               [](AppServices& services) -> std::unique_ptr<Screen> {
+                                 if (services.task == TaskKind::writing) return make_learn_write_trial_screen(services);
+                                 return std::make_unique<LearnTrialScreen>(services);
+                               }}};
 
 }  // namespace
 }  // namespace sc
