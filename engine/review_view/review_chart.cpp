@@ -28,7 +28,7 @@ float row_height(const ExpertiseChart& chart, float scale, float bar) {
 }  // namespace
 
 float expertise_chart_height(const ExpertiseChart& chart, float scale) {
-  return ImGui::GetFontSize() * 2.2f + row_height(chart, scale, 14.0f * scale) * static_cast<float>(chart.skills.size()) +
+  return ImGui::GetFontSize() * 3.5f + row_height(chart, scale, 14.0f * scale) * static_cast<float>(chart.skills.size()) +
          8.0f * scale;
 }
 
@@ -40,7 +40,7 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   const float pad = 14.0f * scale;
   const float rows = static_cast<float>(std::max<std::size_t>(1, chart.skills.size()));
   const float bars = rows * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
-  const float fixed = fs * 2.2f + rows * (fs + 18.0f * scale) + pad;
+  const float fixed = fs * 3.5f + rows * (fs + 18.0f * scale) + pad;
   const float bar = std::clamp((size.y - fixed) / bars, 14.0f * scale, 40.0f * scale);
   dl.AddRectFilled(p, {p.x + size.x, p.y + std::min(size.y, fixed + bars * bar + pad)}, kPanel, 8.0f * scale);
   const float left = p.x + pad, right = p.x + size.x - pad - 150.0f * scale;  // room for "-0.28   drilled"
@@ -54,8 +54,10 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
     x += fs * 1.2f + ImGui::CalcTextSize(chart.rounds[r].c_str()).x + fs;
   }
   dl.AddRect({x, y + fs * 0.15f}, {x + fs * 0.9f, y + fs * 0.95f}, IM_COL32(255, 255, 255, 255), 2.0f, 0, 2.0f * scale);
-  dl.AddText({x + fs * 1.2f, y}, kMuted, "drilled in that round    longer bar = more missed (E = -sum of deltas)");
-  y += fs * 1.8f;
+  dl.AddText({x + fs * 1.2f, y}, kMuted, "drilled in that round");
+  y += fs * 1.3f;
+  dl.AddText({left, y}, kMuted, "longer bar = more missed (E = -sum of the deltas)");
+  y += fs * 1.6f;
   const double full = chart.lowest < 0.0 ? -chart.lowest : 1.0;
   for (const ChartSkill& s : chart.skills) {
     dl.AddRectFilled({left, y + fs * 0.15f}, {left + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(s.skill), 3.0f);

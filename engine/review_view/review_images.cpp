@@ -131,7 +131,7 @@ RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart&
   const float fs = 18.0f;
   const float rows = static_cast<float>(chart.skills.size());
   const float bars = static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
-  const int height = static_cast<int>(title_h + fs * 2.2f + rows * (fs + 6.0f + 14.0f * bars + 12.0f) + 24.0f);
+  const int height = static_cast<int>(title_h + fs * 3.5f + rows * (fs + 6.0f + 14.0f * bars + 12.0f) + 24.0f);
   const int image_height = std::max(height, 720);
   return render(
       context, width, image_height, [](Renderer2D&) {},

@@ -195,6 +195,11 @@ class StartScreen final : public Screen {
     if (ImGui::Button("Free practice", button)) ui.navigator.go_to(practice_screen(services_.task));
     ImGui::EndDisabled();
     ImGui::PopFont();
+    // Instructors: the learner database's sessions, trials and diagnoses (app/gui/screens/review_screen.cpp).
+    if (Navigator::is_available("review")) {
+      ImGui::Dummy(ImVec2(0, 4.0f * s));
+      if (ImGui::Button("Instructor review: learners, trials, diagnoses", ImVec2(-1.0f, 0.0f))) ui.navigator.go_to("review");
+    }
     if (!trainer || !practice) {
       const char* what = !trainer && !practice ? "Training and free practice" : !trainer ? "Training" : "Free practice";
       const std::string note = std::string(what) + " for " +

@@ -1,0 +1,136 @@
+#include "app/gui/screens/review_model.hpp"
+
+#include "app/gui/screens/learn_flow.hpp"
+#include "engine/core/error.hpp"
+#include "teaching/records/data_dir.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
+
+namespace sc {
+
+ReviewModel::ReviewModel(AppServices& services) : services_(services) {
+  if (services.headless) {
+    // The trainer's screenshot session (fixed seed, timestamps and scripted learner) up to its summary.
+    learn_flow_for_screenshot(services, SessionPhase::Summary);
+  }
+  reload();
+  if (!rows_.empty()) select_session(rows_.front().session_id);
+}
+
+void ReviewModel::reload() {
+  try {
+    const std::filesystem::path dir = services_.options.data_dir.empty() ? records::default_data_dir()
+                                                                         : std::filesystem::path(services_.options.data_dir);
+    store_ = std::make_unique<records::LearnerStore>(dir, records::StoreOptions{.read_only = true});
+    rows_ = review::session_rows(store_->list_learners());
+    message.clear();
+  } catch (const InputError& e) {
+    message = e.what();
+    rows_.clear();
+  }
+}
+
+void ReviewModel::sort(review::SessionColumn column, bool ascending) { review::sort_session_rows(rows_, column, ascending); }
+
+const TaskKit& ReviewModel::kit(const std::string& task) {
+  auto& k = kits_[task];
+  if (!k) k = make_task_kit(task);
+  return *k;
+}
+
+const review::SessionListRow* ReviewModel::session_row() const {
+  if (!session_) return nullptr;
+  for (const auto& row : rows_)
+    if (row.session_id == session_->record().session.id) return &row;
+  return nullptr;
+}
+
+void ReviewModel::select_session(std::int64_t id) {
+  if (!store_) return;
+  try {
+    review::SessionRecord record = review::load_session_record(*store_, id);
+    session_ = std::make_unique<review::SessionReview>(kit(record.session.task), std::move(record));
+    trial_.reset();
+    groups_.reset();
+    test_trials_.reset();
+    group_pictures_.clear();
+    chart_.reset();
+    diagnosis_.reset();
+    diagnosis_tried_ = false;
+    diagnosis_problem.clear();
+    if (!session_->record().trials.empty()) select_trial(session_->record().trials.front().seq);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+}
+
+void ReviewModel::select_trial(int seq) {
+  if (!session_) return;
+  try {
+    trial_ = session_->trial(seq);
+    picture_ = trial_picture(*trial_);
+    playback_.load(trial_->learner_track.steps(), trial_->learner_track.step_seconds);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+}
+
+const std::vector<review::TrialReview>& ReviewModel::test_trials() {
+  if (!test_trials_) {
+    test_trials_.emplace();
+    for (const auto& t : session_->record().trials)
+      if (t.record.kind == records::TrialKind::Pretest || t.record.kind == records::TrialKind::Eval)
+        test_trials_->push_back(session_->trial(t.seq));
+  }
+  return *test_trials_;
+}
+
+const std::vector<review::BeforeAfterGroup>& ReviewModel::before_after_groups() {
+  if (!groups_) {
+    groups_.emplace();
+    if (session_) {
+      try {
+        *groups_ = review::before_after_groups(session_->record());
+      } catch (const InputError& e) {
+        message = e.what();
+      }
+    }
+  }
+  return *groups_;
+}
+
+const review_view::BeforeAfterPicture& ReviewModel::before_after_picture(std::size_t group) {
+  auto it = group_pictures_.find(group);
+  if (it == group_pictures_.end())
+    it = group_pictures_.emplace(group, sc::before_after_picture(before_after_groups().at(group), test_trials())).first;
+  return it->second;
+}
+
+std::vector<std::string> ReviewModel::before_after_lines(std::size_t group) {
+  return sc::before_after_lines(before_after_groups().at(group), test_trials());
+}
+
+const review_view::ExpertiseChart* ReviewModel::expertise_chart() {
+  if (!chart_ && session_) {
+    try {
+      chart_ = sc::expertise_chart(review::expertise_rounds(session_->kit(), session_->record()));
+    } catch (const InputError& e) {
+      message = e.what();
+      chart_.emplace();
+    }
+  }
+  return chart_ ? &*chart_ : nullptr;
+}
+
+const review::DiagnosisExplanation* ReviewModel::diagnosis() {
+  if (!diagnosis_tried_ && session_) {
+    diagnosis_tried_ = true;
+    try {
+      diagnosis_ = review::explain_diagnosis(*session_);
+    } catch (const InputError& e) {
+      diagnosis_problem = e.what();
+    }
+  }
+  return diagnosis_ ? &*diagnosis_ : nullptr;
+}
+
+}  // namespace sc

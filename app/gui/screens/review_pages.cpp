@@ -1,0 +1,214 @@
+#include "app/gui/screens/review_pages.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "app/gui/navigator.hpp"
+#include "engine/review_view/review_palette.hpp"
+
+namespace sc {
+namespace {
+
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+std::string session_label(const review::SessionListRow& row) {
+  return row.learner + " - " + row.task + " - " + row.condition + " - " + review::cell_text(row, review::SessionColumn::Date);
+}
+
+void world_frame(UiContext& ui, float x, float y, float w, float h) {
+  ImGui::GetBackgroundDrawList()->AddRect({x, y}, {x + w, y + h}, IM_COL32(60, 68, 82, 255), 0.0f, 0, 1.0f * ui.ui_scale);
+}
+
+}  // namespace
+
+void begin_review_panel(const char* id, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos({x, y}, ImGuiCond_Always);
+  ImGui::SetNextWindowSize({w, h}, ImGuiCond_Always);
+  ImGui::Begin(id, nullptr, kPanelFlags);
+}
+
+void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
+  const float s = ui.ui_scale;
+  begin_review_panel("review_top", 0, 0, static_cast<float>(ui.width), kReviewTopBar * s);
+  ImGui::PushFont(ui.fonts.heading);
+  ImGui::TextUnformatted("Review");
+  ImGui::PopFont();
+  struct Tab {
+    ReviewPage page;
+    const char* label;
+  };
+  const Tab tabs[] = {{ReviewPage::Sessions, "Sessions"},
+                      {ReviewPage::Trial, "Trial viewer"},
+                      {ReviewPage::BeforeAfter, "Before / after"},
+                      {ReviewPage::Expertise, "Expertise & diagnosis"}};
+  for (const Tab& tab : tabs) {
+    ImGui::SameLine(0, 18 * s);
+    const bool current = page == tab.page;
+    const bool needs_session = tab.page != ReviewPage::Sessions && !model.session();
+    ImGui::BeginDisabled(needs_session);
+    if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_HeaderActive]);
+    if (ImGui::Button(tab.label)) page = tab.page;
+    if (current) ImGui::PopStyleColor();
+    ImGui::EndDisabled();
+  }
+  if (const auto* row = model.session_row()) {
+    ImGui::SameLine(0, 24 * s);
+    ImGui::TextDisabled("%s", session_label(*row).c_str());
+  }
+  const float back_w = 150 * s;
+  ImGui::SameLine(static_cast<float>(ui.width) - back_w - ImGui::GetStyle().WindowPadding.x);
+  if (ImGui::Button("Start screen", {back_w, 0})) ui.navigator.go_to("start");
+  ImGui::End();
+  if (!model.message.empty()) {
+    begin_review_panel("review_message", 0, static_cast<float>(ui.height) - 40 * s, static_cast<float>(ui.width), 40 * s);
+    ImGui::TextColored({1.0f, 0.65f, 0.5f, 1.0f}, "%s", model.message.c_str());
+    ImGui::End();
+  }
+}
+
+void draw_review_sessions(UiContext& ui, ReviewModel& model, ReviewPage& page) {
+  const float s = ui.ui_scale;
+  begin_review_panel("review_sessions", 0, kReviewTopBar * s, static_cast<float>(ui.width),
+                     static_cast<float>(ui.height) - kReviewTopBar * s);
+  ImGui::TextDisabled("Every session in the learner database. Click a column to sort; pick a session to review it.");
+  if (ImGui::Button("Reload")) model.reload();
+  const ImGuiTableFlags flags = ImGuiTableFlags_Sortable | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH |
+                                ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
+  if (ImGui::BeginTable("sessions", 9, flags)) {
+    ImGui::TableSetupScrollFreeze(0, 1);
+    for (review::SessionColumn c : review::kSessionColumns) {
+      const ImGuiTableColumnFlags cf = c == review::SessionColumn::Date ? ImGuiTableColumnFlags_DefaultSort : 0;
+      ImGui::TableSetupColumn(std::string(review::column_title(c)).c_str(), cf, 0.0f, static_cast<ImGuiID>(c));
+    }
+    ImGui::TableSetupColumn("Trials", ImGuiTableColumnFlags_NoSort);
+    ImGui::TableSetupColumn("", ImGuiTableColumnFlags_NoSort);
+    ImGui::TableHeadersRow();
+    if (ImGuiTableSortSpecs* specs = ImGui::TableGetSortSpecs(); specs && specs->SpecsDirty && specs->SpecsCount > 0) {
+      model.sort(static_cast<review::SessionColumn>(specs->Specs[0].ColumnUserID),
+                 specs->Specs[0].SortDirection == ImGuiSortDirection_Ascending);
+      specs->SpecsDirty = false;
+    }
+    for (const review::SessionListRow& row : model.rows()) {
+      ImGui::TableNextRow();
+      ImGui::PushID(static_cast<int>(row.session_id));
+      for (review::SessionColumn c : review::kSessionColumns) {
+        ImGui::TableNextColumn();
+        const std::string text = review::cell_text(row, c);
+        if (c == review::SessionColumn::Improvement && row.improvement)
+          ImGui::TextColored(*row.improvement > 0 ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
+                             text.c_str());
+        else
+          ImGui::TextUnformatted(text.c_str());
+      }
+      ImGui::TableNextColumn();
+      ImGui::Text("%d%s", row.trial_count, row.finished ? "" : " (unfinished)");
+      ImGui::TableNextColumn();
+      const bool selected = model.session() && model.session()->record().session.id == row.session_id;
+      if (ImGui::Button(selected ? "Review (selected)" : "Review")) {
+        if (!selected) model.select_session(row.session_id);
+        page = ReviewPage::Trial;
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+  if (model.rows().empty() && model.message.empty()) ImGui::TextDisabled("No sessions yet.");
+  ImGui::End();
+}
+
+void draw_review_before_after(UiContext& ui, ReviewModel& model, std::size_t& group) {
+  const float s = ui.ui_scale, top = kReviewTopBar * s;
+  const auto& groups = model.before_after_groups();
+  const float list_w = 330 * s;
+  begin_review_panel("review_families", 0, top, list_w, static_cast<float>(ui.height) - top);
+  ImGui::TextDisabled("Scenario families");
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    const std::string label = groups[i].title + "\n   " + std::to_string(groups[i].pretest_seqs.size()) + " before, " +
+                              std::to_string(groups[i].eval_seqs.size()) + " after";
+    if (ImGui::Selectable(label.c_str(), group == i)) group = i;
+  }
+  ImGui::Dummy({0, 10 * s});
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("Orange: the pre-test trials. Teal: the evaluation trials (fresh scenarios of the same "
+                      "family). Faint ribbons: the experts' paths.");
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+  if (groups.empty()) return;
+  group = std::min(group, groups.size() - 1);
+  const PixelViewport viewport{list_w, top, static_cast<float>(ui.width) - list_w, static_cast<float>(ui.height) - top};
+  const auto& picture = model.before_after_picture(group);
+  ui.renderer.set_camera(review_view::before_after_camera(picture, viewport));
+  review_view::paint_before_after(ui.renderer, picture);
+  world_frame(ui, viewport.x, viewport.y, viewport.width, viewport.height);
+  ImDrawList& dl = *ImGui::GetBackgroundDrawList();
+  const auto lines = model.before_after_lines(group);
+  float y = top + 10 * s;
+  dl.AddRectFilled({list_w + 6 * s, top + 4 * s},
+                   {list_w + 470 * s, top + 16 * s + ImGui::GetFontSize() * 1.3f * static_cast<float>(lines.size())},
+                   IM_COL32(12, 15, 20, 200), 8 * s);
+  for (const auto& line : lines) {
+    dl.AddText({list_w + 14 * s, y}, IM_COL32(235, 238, 244, 255), line.c_str());
+    y += ImGui::GetFontSize() * 1.3f;
+  }
+}
+
+void draw_review_expertise(UiContext& ui, ReviewModel& model) {
+  const float s = ui.ui_scale, top = kReviewTopBar * s;
+  const float half = static_cast<float>(ui.width) * 0.5f;
+  begin_review_panel("review_chart", 0, top, half, static_cast<float>(ui.height) - top);
+  ImGui::PushFont(ui.fonts.bold);
+  ImGui::TextUnformatted("Expertise per skill across rounds (stored diagnoses)");
+  ImGui::PopFont();
+  if (const auto* chart = model.expertise_chart(); chart && !chart->skills.empty()) {
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - 8 * s,
+                                                                  review_view::expertise_chart_height(*chart, s)));
+    review_view::draw_expertise_chart(*ImGui::GetWindowDrawList(), at, size, *chart, s, ui.fonts.bold);
+    ImGui::Dummy(size);
+  } else {
+    ImGui::TextDisabled("No diagnosis stored yet (the pre-test is unfinished).");
+  }
+  ImGui::End();
+
+  begin_review_panel("review_diagnosis", half, top, half, static_cast<float>(ui.height) - top);
+  ImGui::PushFont(ui.fonts.bold);
+  ImGui::TextUnformatted("Diagnosis explained (round 1)");
+  ImGui::PopFont();
+  const review::DiagnosisExplanation* d = model.diagnosis();
+  ImGui::PushTextWrapPos(0.0f);
+  if (!d) {
+    ImGui::TextDisabled("%s", model.diagnosis_problem.c_str());
+  } else {
+    ImGui::TextDisabled("Alg. 2 recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
+                        "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward).",
+                        d->pretest_trials, d->extractor.c_str());
+    ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
+                       d->matches_stored ? "Matches the stored diagnosis."
+                                         : "Differs from the stored diagnosis (model or data changed since).");
+    for (const auto& skill : d->skills) {
+      ImGui::Separator();
+      const ImVec2 at = ImGui::GetCursorScreenPos();
+      const float fs = ImGui::GetFontSize();
+      ImGui::GetWindowDrawList()->AddRectFilled({at.x, at.y + fs * 0.15f}, {at.x + fs * 0.8f, at.y + fs * 0.95f},
+                                                review_view::skill_color_u32(skill.skill), 3.0f);
+      ImGui::Dummy({fs, fs});
+      ImGui::SameLine();
+      ImGui::PushFont(ui.fonts.bold);
+      ImGui::Text("skill %d: %s", skill.skill, skill.description.c_str());
+      ImGui::PopFont();
+      ImGui::Text("E = %.3f, used %d times by the expert", skill.expertise, skill.occurrences);
+      if (skill.missed.empty()) ImGui::TextDisabled("Never missed (a target by rank among equals).");
+      for (const auto& m : skill.missed)
+        ImGui::BulletText("missed in pre-test trial %d: position j = %d, reward r = %.3f, Delta = %.3f", m.seq,
+                          m.position, m.reward, m.delta);
+    }
+  }
+  ImGui::PopTextWrapPos();
+  ImGui::End();
+}
+
+}  // namespace sc

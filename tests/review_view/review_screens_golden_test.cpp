@@ -1,0 +1,28 @@
+// Golden screenshots of the Review mode's session browser and trial viewer, rendered by the real program
+// offscreen (`skillcoach screenshot`): the trainer's deterministic screenshot session (fixed seed,
+// timestamps and scripted learner) is the database they show.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/render/rgba_image.hpp"
+#include "tests/support/golden_image.hpp"
+#include "tests/support/run_skillcoach.hpp"
+
+namespace sc::test {
+namespace {
+
+class ReviewScreenGolden : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ReviewScreenGolden, MatchesGolden) {
+  const std::string screen = GetParam();
+  const auto out = test_output_dir() / (screen + ".png");
+  const CommandResult shot = run_skillcoach("screenshot --screen " + screen + " --size 1280x720 --out '" + out.string() + "'");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  EXPECT_TRUE(matches_golden(read_png(out), "review/screen_" + screen));
+}
+
+INSTANTIATE_TEST_SUITE_P(Review, ReviewScreenGolden, ::testing::Values("review", "review_trial"));
+
+}  // namespace
+}  // namespace sc::test
