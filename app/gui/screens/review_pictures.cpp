@@ -54,7 +54,7 @@ review_view::RewardPlot reward_plot(const review::TrialReview& trial) {
   review_view::RewardPlot plot;
   plot.times = trial.reward_times;
   plot.rewards = trial.rewards;
-  plot.caption = trial.task == "parking" ? "reward per control step (0 = goal)" : "score of the ink so far (0 = word)";
+  plot.caption = trial.task == "parking" ? "reward per control step (0 = goal)" : "score of the ink so far (0 = perfect)";
   return plot;
 }
 
