@@ -64,7 +64,7 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         // What the lines mean, then one swatch per skill.
         const bool parking = picture.task == "parking";
         dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, IM_COL32(255, 226, 138, 255), 5.0f * s);
-        dl.AddText({x + fs * 2.2f, y}, kText, "learner, coloured by skill; dots: boundaries");
+        dl.AddText({x + fs * 2.2f, y}, kText, "this trial, coloured by skill; dots: boundaries");
         y += fs * 1.35f;
         if (picture.expert) {
           dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kExpertRibbon.with_alpha(0.8f)), fs * 0.8f);

@@ -137,11 +137,12 @@ TrialReview SessionReview::trial(int seq) const {
     parking_rewards(review, steps, where);
   } else {
     review.learner_track = track_of(review.task, steps, std::nullopt);
-    writing_rewards(review, kit_, kind == records::TrialKind::Practice ? drill : nullptr);
+    // Demos and practice are measured against the drill (they do not write the whole word).
+    writing_rewards(review, kit_, drill);
   }
   review.reward = stored.record.score ? *stored.record.score
-                  : drill && kind == records::TrialKind::Practice ? kit_.drill_attempt_reward(*drill, review.learner)
-                                                                  : kit_.reward_of(review.learner);
+                  : drill                ? kit_.drill_attempt_reward(*drill, review.learner)
+                                         : kit_.reward_of(review.learner);
   return review;
 }
 
