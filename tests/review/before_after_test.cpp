@@ -40,7 +40,7 @@ TEST(BeforeAfter, EveryTestTrialIsInExactlyOneGroup) {
   EXPECT_EQ(pre, want_pre);
   EXPECT_EQ(eval, want_eval);
   EXPECT_EQ(want_pre.size(), 3u);
-  EXPECT_EQ(want_eval.size(), 2u);
+  EXPECT_EQ(want_eval.size(), 4u);  // two rounds of two
 }
 
 }  // namespace

@@ -50,26 +50,30 @@ ReviewFixture build_fixture() {
   TrainingSession s(parking_kit(), store, settings, clock);
   fixture.session_id = s.session_id();
   int n = 0;
-  while (s.phase() != SessionPhase::Summary) {
-    const std::uint64_t seed = 1000 + static_cast<std::uint64_t>(n++);
-    const TrialTimes times{clock(), clock()};
-    switch (s.phase()) {
-      case SessionPhase::Pretest:
-        // The second pre-test trial stops after two control steps (time ran out, or the learner gave up): its
-        // steps cannot hold the expert's later skills, so Alg. 2 has misses to explain even with the time
-        // heuristic extractor this checkout falls back to without a trained model.
-        s.submit_test_trial(attempt(s.test_expert_trial(), 0.6, seed, s.item_index() == 1 ? 2 : 0), times);
-        break;
-      case SessionPhase::Evaluation: s.submit_test_trial(attempt(s.test_expert_trial(), 0.85, seed), times); break;
-      case SessionPhase::Diagnosis: s.analyse(); break;
-      case SessionPhase::Drills: {
-        const int item = s.current_item();
-        const Json reference = s.kit().drill_trial(s.drill(item));
-        s.record_demo(item, reference, times);
-        s.submit_practice(attempt(reference, 0.8, seed), times);
-        break;
+  // Two adaptive rounds, so the review has expertise across rounds (round 2 diagnoses the round-1 practice).
+  for (int round = 1; round <= 2; ++round) {
+    if (round > 1) s.start_next_round();
+    while (s.phase() != SessionPhase::Summary) {
+      const std::uint64_t seed = 1000 + static_cast<std::uint64_t>(n++);
+      const TrialTimes times{clock(), clock()};
+      switch (s.phase()) {
+        case SessionPhase::Pretest:
+          // The second pre-test trial stops after two control steps (time ran out, or the learner gave up): its
+          // steps cannot hold the expert's later skills, so Alg. 2 has misses to explain even with the time
+          // heuristic extractor this checkout falls back to without a trained model.
+          s.submit_test_trial(attempt(s.test_expert_trial(), 0.6, seed, s.item_index() == 1 ? 2 : 0), times);
+          break;
+        case SessionPhase::Evaluation: s.submit_test_trial(attempt(s.test_expert_trial(), 0.85, seed), times); break;
+        case SessionPhase::Diagnosis: s.analyse(); break;
+        case SessionPhase::Drills: {
+          const int item = s.current_item();
+          const Json reference = s.kit().drill_trial(s.drill(item));
+          s.record_demo(item, reference, times);
+          s.submit_practice(attempt(reference, 0.8, seed), times);
+          break;
+        }
+        case SessionPhase::Summary: break;
       }
-      case SessionPhase::Summary: break;
     }
   }
   s.finish();

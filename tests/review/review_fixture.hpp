@@ -1,6 +1,6 @@
 #pragma once
 // The fixed learner database the review tests read: one parking session of learner "Ada" (adaptive, seed 7,
-// 3 pre-test and 2 evaluation scenarios, the second pre-test trial cut short, one round of drills) played by a scripted learner with fixed
+// 3 pre-test and 2 evaluation scenarios, the second pre-test trial cut short, two adaptive rounds of drills) played by a scripted learner with fixed
 // timestamps, written through the real TrainingSession and LearnerStore. Built once per test process into
 // $SKILLCOACH_TEST_OUTPUT/review/<name>/ (deterministic: same bytes of content every time).
 //
