@@ -74,7 +74,9 @@ int run_window(SdlWindowContext& window, const GuiOptions& options) {
     mouse_to_pixels(density);
     FrameInput frame_input = input.poll(window.window(), density);
     frame_input.ui_wants_mouse = ImGui::GetIO().WantCaptureMouse;
-    frame_input.ui_wants_keyboard = ImGui::GetIO().WantCaptureKeyboard;
+    // Only a text field owns the keyboard: with keyboard navigation on, WantCaptureKeyboard is also true
+    // whenever a window has focus (every newly shown card takes it), which swallowed Enter on result cards.
+    frame_input.ui_wants_keyboard = ImGui::GetIO().WantTextInput;
     host.frame(frame_input, elapsed);
     window.present();
   }

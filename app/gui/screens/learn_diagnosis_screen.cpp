@@ -69,8 +69,13 @@ class LearnDiagnosisScreen final : public Screen {
     if (worst <= 1e-9)
       learn_ui::muted_wrapped("No skill stood out as missing: the drills cover the skills the expert relies on most.");
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
-    ImDrawList& d = *ImGui::GetWindowDrawList();
     const ImVec2 pic(110 * sc, 56 * sc);
+    // The list scrolls when the window is too short for every row, so the button below always shows.
+    const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
+    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc);
+    ImGui::BeginChild("skill_rows", ImVec2(0, std::min(rows_height, room)), false,
+                      rows_height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
+    ImDrawList& d = *ImGui::GetWindowDrawList();
     for (int r = 0; r < shown; ++r) {
       const int m = e.ranking[static_cast<std::size_t>(r)];
       const bool drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
@@ -95,8 +100,9 @@ class LearnDiagnosisScreen final : public Screen {
       ImGui::PopStyleColor();
       ImGui::EndGroup();
     }
+    ImGui::EndChild();
     ImGui::Dummy(ImVec2(0, 6 * sc));
-    ImGui::Text("%d practice trials planned (%s).", s.practice_slot_count(),
+    ImGui::Text("%d practice trial%s planned (%s).", s.practice_slot_count(), s.practice_slot_count() == 1 ? "" : "s",
                 std::string(condition_name(s.settings().condition)).c_str());
     if (learn_ui::primary_button(ui, "Start the drills") || confirm_) ui.navigator.go_to(screen_for_phase(s.phase()));
     confirm_ = false;

@@ -40,7 +40,8 @@ class LearnSummaryScreen final : public Screen {
     ImGui::Text("%s by %.3f (0 is the expert's result)", summary_->improvement >= 0 ? "Improved" : "Dropped",
                 std::abs(summary_->improvement));
     ImGui::PopFont();
-    ImGui::TextDisabled("Round %d, %d practice trials.", summary_->round, summary_->practice_trials);
+    ImGui::TextDisabled("Round %d, %d practice trial%s.", summary_->round, summary_->practice_trials,
+                        summary_->practice_trials == 1 ? "" : "s");
     ImGui::Dummy(ImVec2(0, 6 * sc));
     draw_before_after(ui, *s);
     ImGui::Dummy(ImVec2(0, 6 * sc));

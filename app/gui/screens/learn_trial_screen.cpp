@@ -140,6 +140,7 @@ class LearnTrialScreen final : public Screen {
         set_stage(Stage::countdown);
         return;
       }
+      result_title_ = learn_phase_title(s, false, retry_item_.has_value() || ghost_.has_value());  // before it moves on
       SubmittedTrial kept;
       if (retry_item_)
         kept = s.submit_extra_practice(*retry_item_, trial, times);
@@ -205,8 +206,8 @@ class LearnTrialScreen final : public Screen {
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
     ImGui::Begin("learn_trial_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
     ImGui::PushFont(ui.fonts.bold);
-    ImGui::TextUnformatted(learn_phase_title(session(), stage_ == Stage::demo || demo_pending_,
-                                             stage_ == Stage::result && was_practice_).c_str());
+    ImGui::TextUnformatted(stage_ == Stage::result ? result_title_.c_str()
+                                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false).c_str());
     ImGui::PopFont();
     ImGui::SameLine(0, 30 * s);
     if (stage_ == Stage::driving)
@@ -280,6 +281,7 @@ class LearnTrialScreen final : public Screen {
   double last_reward_ = 0;
   std::string note_;
   std::string started_;
+  std::string result_title_;  // the header of the trial whose result is shown
 };
 
 const ScreenRegistration kReg{{"learn_trial", "Trainer: pre-test, drill demo and practice, evaluation trial",

@@ -138,6 +138,7 @@ class LearnWriteTrialScreen final : public Screen {
     trial.device = device_key(services_.device);
     end_reason_ = pen_.end_reason();
     score_ = writing::score_writing(reference_.points, filled.points);
+    result_title_ = learn_phase_title(session(), false, is_drill_);  // before the session moves on
     submit(writing::writing_trial_json(trial));
     started_.clear();
     stage_ = Stage::result;
@@ -184,8 +185,8 @@ class LearnWriteTrialScreen final : public Screen {
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
     ImGui::Begin("learn_write_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
     ImGui::PushFont(ui.fonts.bold);
-    ImGui::TextUnformatted(learn_phase_title(session(), stage_ == Stage::demo || demo_pending_,
-                                             stage_ == Stage::result && was_practice_).c_str());
+    ImGui::TextUnformatted(stage_ == Stage::result ? result_title_.c_str()
+                                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false).c_str());
     ImGui::PopFont();
     ImGui::SameLine(0, 30 * s);
     if (stage_ == Stage::demo)
@@ -277,7 +278,8 @@ class LearnWriteTrialScreen final : public Screen {
   double last_reward_ = 0;
   std::string note_;
   std::string started_;
-  std::string target_;  // the drill's target skill in plain words
+  std::string target_;        // the drill's target skill in plain words
+  std::string result_title_;  // the header of the trial whose result is shown
 };
 
 }  // namespace
