@@ -67,6 +67,12 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
     ImGui::TextDisabled("demo (not scored), %d steps", trial.learner_track.steps());
   ImGui::TextDisabled(trial.ghost ? "Dashed: the drill's ghost path." : "Ribbon: the expert's path for this scenario.");
   ImGui::PopTextWrapPos();
+  // The stick and the reward plot keep the bottom of the panel; the legend scrolls above them when a task has
+  // many skills (writing has 8).
+  const float radius = 38 * s, plot_h = 136 * s;
+  const float bottom_h = ImGui::GetFontSize() * 1.6f + 2 * radius + plot_h + 4 * ImGui::GetStyle().ItemSpacing.y + 24 * s;
+  const float legend_h = std::max(60 * s, ImGui::GetWindowPos().y + h - ImGui::GetCursorScreenPos().y - bottom_h);
+  ImGui::BeginChild("legend", {0, legend_h}, false);
   // One row per skill in the picture: its colour, its words and the expert example the trainer shows.
   std::set<int> skills;
   for (const auto* spans : {&trial.learner_skills, &trial.expert_skills, &trial.ghost_skills})
@@ -86,16 +92,14 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
     ImGui::PopTextWrapPos();
     ImGui::SetCursorScreenPos({at.x, at.y + thumb.y + 6 * s});
   }
-  ImGui::Dummy({0, 4 * s});
+  ImGui::EndChild();
   ImGui::TextDisabled(trial.task == "parking" ? "Stick: steering / throttle" : "Pen direction");
-  const float radius = 38 * s;
   const ImVec2 c = ImGui::GetCursorScreenPos();
   draw_input_stick(ui, trial, model.playback().current_step(), {c.x + radius + 4 * s, c.y + radius + 4 * s}, radius);
   ImGui::Dummy({2 * radius + 8 * s, 2 * radius + 8 * s});
   review_view::RewardPlot plot = reward_plot(trial);
   plot.playhead = model.playback().seconds();
   const ImVec2 at = ImGui::GetCursorScreenPos();
-  const float plot_h = std::max(90 * s, ImGui::GetWindowPos().y + h - at.y - 12 * s);
   review_view::draw_reward_plot(*ImGui::GetWindowDrawList(), at, {w - 2 * ImGui::GetStyle().WindowPadding.x, plot_h}, plot, s);
   ImGui::Dummy({0, plot_h});
   ImGui::End();
