@@ -55,6 +55,7 @@ void ParkingKit::build(std::vector<ParkingTrial> pool) {
   }
   segment_expert_demos(demos_, *extractor_, kParkingTimeSlices);
   motions_ = parking_skill_motions(demo_steps(demos_), demo_skills(demos_), extractor_->num_skills());
+  descriptions_ = describe_parking_motions(motions_);
   projector_ = std::make_unique<ParkingDrillProjector>(std::move(pool));
 }
 
@@ -101,7 +102,7 @@ std::vector<Json> ParkingKit::fresh_scenarios(int count, std::uint64_t seed, con
 
 std::string ParkingKit::describe_skill(int skill) const {
   if (skill < 0 || skill >= static_cast<int>(motions_.size())) return "unknown skill";
-  return describe_parking_motion(motions_[static_cast<std::size_t>(skill)]);
+  return descriptions_[static_cast<std::size_t>(skill)];
 }
 
 double ParkingKit::time_limit_seconds(int expert_steps) const {

@@ -73,6 +73,7 @@ class ParkingKit final : public TaskKit {
   std::string pool_notice_;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
+  std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills
   std::unique_ptr<ParkingDrillProjector> projector_;
 };
 

@@ -1,6 +1,8 @@
 #include "teaching/tasks/parking_skill_motion.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "teaching/tasks/parking_steps.hpp"
 
@@ -64,6 +66,25 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
   const bool moving = std::abs(m.mean_speed) >= kMovingSpeed;
   if (moving && m.mean_acceleration * m.mean_speed < 0.0 && std::abs(m.mean_acceleration) >= kBraking)
     words += ", braking";
+  return words;
+}
+
+std::vector<std::string> describe_parking_motions(const std::vector<ParkingSkillMotion>& motions) {
+  std::vector<std::string> words;
+  for (const auto& m : motions) words.push_back(describe_parking_motion(m));
+  std::map<std::string, std::vector<std::size_t>> groups;  // shared words -> skills, used ones only
+  for (std::size_t i = 0; i < motions.size(); ++i)
+    if (motions[i].steps > 0) groups[words[i]].push_back(i);
+  for (auto& [text, skills] : groups) {
+    if (skills.size() < 2) continue;
+    std::stable_sort(skills.begin(), skills.end(), [&](std::size_t a, std::size_t b) {
+      return std::abs(motions[a].mean_speed) < std::abs(motions[b].mean_speed);
+    });
+    for (std::size_t k = 0; k < skills.size(); ++k) {
+      if (skills.size() == 2) words[skills[k]] = text + (k == 0 ? ", slowly" : ", quickly");
+      else words[skills[k]] = text + ", pace " + std::to_string(k + 1) + " of " + std::to_string(skills.size());
+    }
+  }
   return words;
 }
 

@@ -24,5 +24,9 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
 
 // "reversing while steering left, braking", "driving forward straight", "unused skill" ...
 std::string describe_parking_motion(const ParkingSkillMotion& motion);
+// The words of every skill, distinct among used skills: skills that share words get their pace added
+// ("reversing straight, slowly" / "..., quickly"; "..., pace 2 of 3" for three or more), so a learner never
+// sees two different skills under one name.
+std::vector<std::string> describe_parking_motions(const std::vector<ParkingSkillMotion>& motions);
 
 }  // namespace sc

@@ -114,6 +114,21 @@ TEST(ParkingKit, TimeLimitGrowsWithTheExpertsLengthUpToTheHorizon) {
   EXPECT_DOUBLE_EQ(kit().time_limit_seconds(1000), 20.0);
 }
 
+TEST(ParkingKit, SkillsSharingWordsAreToldApartByTheirPace) {
+  ParkingSkillMotion slow_back{10, -1.0, -0.2, 0.0, 1.0}, fast_back{12, -4.0, -0.5, 0.0, 1.0};
+  ParkingSkillMotion forward{8, 3.0, 0.5, 0.0, 0.0}, unused{};
+  const auto words = describe_parking_motions({fast_back, unused, forward, slow_back, unused});
+  EXPECT_EQ(words[0], "reversing straight, quickly");
+  EXPECT_EQ(words[3], "reversing straight, slowly");
+  EXPECT_EQ(words[2], "driving forward straight");
+  EXPECT_EQ(words[1], "unused skill");
+  EXPECT_EQ(words[4], "unused skill");
+  const auto three = describe_parking_motions({fast_back, slow_back, {5, -2.0, -0.3, 0.0, 1.0}});
+  EXPECT_EQ(three[1], "reversing straight, pace 1 of 3");
+  EXPECT_EQ(three[2], "reversing straight, pace 2 of 3");
+  EXPECT_EQ(three[0], "reversing straight, pace 3 of 3");
+}
+
 TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {
   ParkingSkillMotion reverse{10, -3.0, -0.8, -0.6, 1.0};
   EXPECT_EQ(describe_parking_motion(reverse), "reversing while steering left");
