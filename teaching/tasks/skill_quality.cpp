@@ -1,0 +1,118 @@
+#include "teaching/tasks/skill_quality.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "engine/core/error.hpp"
+#include "teaching/skills/skill_usage.hpp"
+#include "teaching/tasks/parking_steps.hpp"
+
+namespace sc {
+
+BoundaryScore writing_boundary_score(const std::vector<Segmentation>& predicted, const std::vector<SkillDemo>& demos,
+                                     double tolerance_fraction) {
+  BoundaryScore total;
+  for (std::size_t i = 0; i < demos.size() && i < predicted.size(); ++i) {
+    if (demos[i].true_boundaries.empty()) continue;
+    const int tolerance = static_cast<int>(std::lround(tolerance_fraction * demos[i].steps.length()));
+    total += score_boundaries(interior_boundaries(predicted[i]), demos[i].true_boundaries, tolerance);
+  }
+  return total;
+}
+
+namespace {
+
+// Signed speed (m/s) of an observation: velocity (x5, normalised by 5 m/s) projected on the heading.
+double signed_speed(const StepSequence& s, int t) {
+  const float* o = &s.states[static_cast<std::size_t>(t * s.state_dim)];
+  return 5.0 * (o[2] * o[4] + o[3] * o[5]);
+}
+
+}  // namespace
+
+ParkingStepKind classify_parking_step(const StepSequence& s, int t) {
+  const int next = t + 1 < s.length() ? t + 1 : t;
+  ParkingStepKind kind;
+  kind.reversing = signed_speed(s, next) < 0.0;
+  const double steer = s.actions[static_cast<std::size_t>(t * s.action_dim + 1)];
+  kind.turn = steer > kStraightSteering ? 1 : (steer < -kStraightSteering ? -1 : 0);
+  return kind;
+}
+
+double ParkingSkillPurity::turn_purity() const { return std::max({left, right, straight}); }
+
+ParkingPurityReport parking_skill_purity(const std::vector<Segmentation>& segmentations,
+                                         const std::vector<StepSequence>& trajectories) {
+  struct Counts {
+    int steps = 0, reversing = 0, left = 0, right = 0;
+  };
+  std::map<int, Counts> counts;
+  for (std::size_t i = 0; i < segmentations.size() && i < trajectories.size(); ++i) {
+    const StepSequence& s = trajectories[i];
+    if (s.state_dim != kParkingStateDim || s.action_dim != kParkingActionDim ||
+        s.states.size() != static_cast<std::size_t>(s.length() * s.state_dim))
+      throw InputError("parking trajectory " + std::to_string(i), "is not a 12-D state / 2-D action step sequence");
+    for (const SkillSegment& seg : segmentations[i].segments)
+      for (int t = seg.begin; t < seg.end && t < s.length(); ++t) {
+        const ParkingStepKind k = classify_parking_step(s, t);
+        Counts& c = counts[seg.skill];
+        ++c.steps;
+        c.reversing += k.reversing;
+        c.left += k.turn > 0;
+        c.right += k.turn < 0;
+      }
+  }
+  ParkingPurityReport out;
+  int total = 0;
+  for (const auto& [skill, c] : counts) {
+    const double n = c.steps;
+    ParkingSkillPurity p{skill, c.steps, c.reversing / n, (c.steps - c.reversing) / n,
+                         c.left / n, c.right / n, (c.steps - c.left - c.right) / n};
+    out.direction_purity += p.direction_purity() * n;
+    out.turn_purity += p.turn_purity() * n;
+    total += c.steps;
+    out.skills.push_back(p);
+  }
+  if (total > 0) {
+    out.direction_purity /= total;
+    out.turn_purity /= total;
+  }
+  return out;
+}
+
+Json to_json(const BoundaryScore& s) {
+  return Json{{"precision", s.precision()}, {"recall", s.recall()}, {"f1", s.f1()},
+              {"true_positives", s.true_positives}, {"false_positives", s.false_positives},
+              {"false_negatives", s.false_negatives}};
+}
+
+Json to_json(const ParkingPurityReport& r) {
+  Json per_skill = Json::array();
+  for (const ParkingSkillPurity& p : r.skills)
+    per_skill.push_back({{"skill", p.skill}, {"steps", p.steps}, {"reversing", p.reversing}, {"forward", p.forward},
+                         {"left", p.left}, {"right", p.right}, {"straight", p.straight}});
+  return Json{{"direction_purity", r.direction_purity}, {"turn_purity", r.turn_purity}, {"per_skill", std::move(per_skill)}};
+}
+
+Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentation>& segmentations) {
+  if (segmentations.size() != data.demos.size())
+    throw InputError("skill quality", "got " + std::to_string(segmentations.size()) + " segmentations for " +
+                                          std::to_string(data.demos.size()) + " trajectories");
+  long steps = 0;
+  bool boundaries_known = false;
+  for (const SkillDemo& d : data.demos) {
+    steps += d.steps.length();
+    boundaries_known = boundaries_known || !d.true_boundaries.empty();
+  }
+  Json out{{"task", data.task}, {"data", data.description}, {"trajectories", data.demos.size()}, {"steps", steps},
+           {"usage", to_json(skill_usage(segmentations))}};
+  if (boundaries_known) {
+    out["boundaries"] = to_json(writing_boundary_score(segmentations, data.demos));
+    out["boundaries"]["tolerance"] = "+-5% of the word's length in steps";
+  }
+  if (data.task == "parking") out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
+  return out;
+}
+
+}  // namespace sc

@@ -1,0 +1,59 @@
+#pragma once
+// Segmentation quality of a task's skills (evaluate-skills), measured against what the tasks know:
+//  * writing: the true character boundaries of generated words; a predicted boundary counts when it lies
+//    within +-5 % of the word's length (in steps) of a not yet matched true boundary (issue 5);
+//  * parking: skill purity - for each skill, the share of its steps that reverse vs drive forward and that
+//    steer left vs right vs straight. A skill that mixes all of them teaches nothing specific.
+#include <vector>
+
+#include "engine/core/json_file.hpp"
+#include "teaching/skills/segmentation_metrics.hpp"
+#include "teaching/tasks/skill_training_data.hpp"
+
+namespace sc {
+
+inline constexpr double kWritingBoundaryTolerance = 0.05;  // fraction of the word's length
+
+// Sum over demos of score_boundaries(interior predicted, demo.true_boundaries, round(fraction * T)).
+// `predicted` is parallel to `demos`; demos without true boundaries are skipped.
+BoundaryScore writing_boundary_score(const std::vector<Segmentation>& predicted, const std::vector<SkillDemo>& demos,
+                                     double tolerance_fraction = kWritingBoundaryTolerance);
+
+// Steering |u1| at most this is "straight" (u1 in [-1, 1] maps to +-45 degrees: 0.1 is 4.5 degrees).
+inline constexpr double kStraightSteering = 0.1;
+
+struct ParkingStepKind {
+  bool reversing = false;  // signed speed after the step (before it for the last step) is negative
+  int turn = 0;            // +1 left (u1 > kStraightSteering), -1 right, 0 straight
+};
+// Reads a parking StepSequence (12-D observations, see parking_steps.hpp) at step t.
+ParkingStepKind classify_parking_step(const StepSequence& steps, int t);
+
+struct ParkingSkillPurity {
+  int skill = 0;
+  int steps = 0;
+  double reversing = 0.0, forward = 0.0;           // shares of the skill's steps, sum to 1
+  double left = 0.0, right = 0.0, straight = 0.0;  // shares, sum to 1
+  double direction_purity() const { return reversing > forward ? reversing : forward; }
+  double turn_purity() const;                       // the largest of left, right, straight
+};
+
+struct ParkingPurityReport {
+  std::vector<ParkingSkillPurity> skills;  // skills with at least one step, by id
+  double direction_purity = 0.0;           // step-weighted mean of the skills' direction purity
+  double turn_purity = 0.0;                // step-weighted mean of the skills' turn purity
+};
+
+// `segmentations` parallel to `trajectories`. Throws InputError if a trajectory is not 12-D/2-D.
+ParkingPurityReport parking_skill_purity(const std::vector<Segmentation>& segmentations,
+                                         const std::vector<StepSequence>& trajectories);
+
+Json to_json(const BoundaryScore& score);
+Json to_json(const ParkingPurityReport& report);
+
+// What evaluate-skills prints for `segmentations` (parallel to data.demos): {"task", "trajectories",
+// "steps", "usage" (skill_usage.hpp), and "boundaries" (writing, when true boundaries are known:
+// to_json(BoundaryScore) plus "tolerance") or "purity" (parking)}.
+Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentation>& segmentations);
+
+}  // namespace sc

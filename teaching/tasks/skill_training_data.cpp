@@ -1,0 +1,116 @@
+#include "teaching/tasks/skill_training_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.hpp"
+#include "engine/core/json_file.hpp"
+#include "engine/core/rng.hpp"
+#include "engine/parking/parking_expert.hpp"
+#include "engine/parking/parking_trial.hpp"
+#include "engine/writing/step_data.hpp"
+#include "engine/writing/word_generator.hpp"
+#include "engine/writing/writing_scenario.hpp"
+#include "engine/writing/writing_trial.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
+#include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/writing_steps.hpp"
+
+namespace sc {
+
+std::vector<StepSequence> SkillDataSet::steps() const {
+  std::vector<StepSequence> out;
+  out.reserve(demos.size());
+  for (const auto& d : demos) out.push_back(d.steps);
+  return out;
+}
+
+SkillDataSet generate_parking_demos(int count, std::uint64_t seed) {
+  if (count < 1) throw InputError("parking demonstrations", "count must be at least 1");
+  const ParkingExpert expert;
+  SkillDataSet out{"parking", "", {}};
+  for (int i = 0; i < count; ++i) {
+    const ParkingScenario scenario = parking_pool_scenario(seed, i);
+    const ParkingPlan plan = expert.plan(scenario);
+    const ParkingTrial trial = plan.to_trial(scenario);
+    // A plan that never parks is not a demonstration of parking skills.
+    if (!trial.success.value_or(false)) continue;
+    out.demos.push_back({"scenario " + std::to_string(i), parking_step_sequence(trial), {}});
+  }
+  out.description = std::to_string(out.demos.size()) + " parked ParkingExpert plans out of " + std::to_string(count) +
+                    " random classic scenarios (parking_pool_scenario(seed " + std::to_string(seed) + ", 0.." +
+                    std::to_string(count - 1) + "))";
+  return out;
+}
+
+SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
+  if (count < 1) throw InputError("writing demonstrations", "count must be at least 1");
+  Rng rng(seed);
+  const std::vector<std::string> words = writing::generate_classic_words((count + 1) / 2, rng);
+  const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
+  SkillDataSet out{"writing", "", {}};
+  for (int i = 0; i < count; ++i) {
+    const writing::WordTrajectory gold = writing::build_word_trajectory(glyphs, words[static_cast<std::size_t>(i)]);
+    const writing::WritingStepData data = writing::expert_step_data(gold);
+    // character_starts[0] is 0: the interior boundaries are the starts of symbols 2..n.
+    std::vector<int> boundaries(data.character_starts.begin() + (data.character_starts.empty() ? 0 : 1),
+                                data.character_starts.end());
+    out.demos.push_back({gold.word, writing_step_sequence(data), std::move(boundaries)});
+  }
+  out.description = std::to_string(count) + " gold trajectories of classic words from the reference's generator (seed " +
+                    std::to_string(seed) + ")";
+  return out;
+}
+
+SkillDataSet generate_task_demos(const std::string& task, int count, std::uint64_t seed) {
+  if (task == "parking") return generate_parking_demos(count, seed);
+  if (task == "writing") return generate_writing_demos(count, seed);
+  throw InputError("--task", "'" + task + "' is not parking or writing");
+}
+
+namespace {
+
+StepSequence trial_steps(const std::string& task, const std::filesystem::path& file) {
+  const Json doc = read_json_file(file);
+  const std::string name = file.string();
+  if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
+    throw InputError(name, "not a " + task + " trial ($.task is not \"" + task + "\")");
+  if (task == "parking") return parking_step_sequence(parse_parking_trial(doc, name));
+  return writing_step_sequence(writing::parse_writing_trial(doc, name));
+}
+
+}  // namespace
+
+SkillDataSet read_task_demos(const std::string& task, const std::filesystem::path& dir) {
+  if (task != "parking" && task != "writing") throw InputError("--task", "'" + task + "' is not parking or writing");
+  if (!std::filesystem::is_directory(dir)) throw InputError(dir.string(), "not a folder of trial files");
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw InputError(dir.string(), "contains no .json trial files");
+  SkillDataSet out{task, std::to_string(files.size()) + " " + task + " trial files from " + dir.string(), {}};
+  for (const auto& file : files) {
+    StepSequence steps = trial_steps(task, file);
+    if (steps.length() == 0) throw InputError(file.string(), "trial has no steps");
+    out.demos.push_back({file.filename().string(), std::move(steps), {}});
+  }
+  return out;
+}
+
+DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint64_t seed) {
+  const std::size_t n = data.demos.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  Rng rng = Rng(seed).fork(0x5b117u);
+  for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+  std::size_t held = static_cast<std::size_t>(std::lround(valid_fraction * static_cast<double>(n)));
+  if (n >= 2) held = std::clamp<std::size_t>(held, 1, n - 1);
+  else held = 0;
+  DataSplit out;
+  for (std::size_t i = 0; i < n; ++i)
+    (i < held ? out.valid : out.train).push_back(data.demos[order[i]].steps);
+  return out;
+}
+
+}  // namespace sc

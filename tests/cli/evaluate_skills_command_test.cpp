@@ -1,0 +1,57 @@
+// `skillcoach evaluate-skills` end to end on tiny models (the numbers are checked for shape and range here;
+// their meaning is tested in tests/tasks/skill_quality_test.cpp).
+#include <gtest/gtest.h>
+
+#include "tests/cli/skills_cli_fixture.hpp"
+
+namespace sc {
+namespace {
+
+using test::run_skillcoach;
+
+Json json_of(const std::string& output) {
+  const auto start = output.find("\n{");
+  EXPECT_NE(start, std::string::npos) << output;
+  return Json::parse(output.substr(start == std::string::npos ? 0 : start + 1));
+}
+
+TEST(EvaluateSkillsCommand, WritingReportsBoundaryScoresUsageAndReconstructionOnHeldOutWords) {
+  const auto r = run_skillcoach("evaluate-skills --task writing --count 10 --model " + test::tiny_model("writing").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json d = json_of(r.output);
+  EXPECT_EQ(d.at("seed"), 4);  // the model's seed (3) + 1: not its training data
+  EXPECT_EQ(d.at("trajectories"), 10);
+  const Json& b = d.at("boundaries");
+  // 8-symbol words have 7 interior character boundaries each.
+  EXPECT_EQ(b.at("true_positives").get<int>() + b.at("false_negatives").get<int>(), 70);
+  EXPECT_GE(b.at("f1").get<double>(), 0.0);
+  EXPECT_LE(b.at("f1").get<double>(), 1.0);
+  EXPECT_GE(d.at("usage").at("skills_used").get<int>(), 1);
+  EXPECT_GT(d.at("usage").at("mean_segment_length").get<double>(), 0.0);
+  EXPECT_GT(d.at("action_reconstruction_error").get<double>(), 0.0);
+  EXPECT_FALSE(d.contains("purity"));
+}
+
+TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
+  const auto r = run_skillcoach("evaluate-skills --task parking --count 4 --model " + test::tiny_model("parking").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json d = json_of(r.output);
+  ASSERT_FALSE(d.at("purity").at("per_skill").empty());
+  for (const Json& p : d.at("purity").at("per_skill")) {
+    EXPECT_NEAR(p.at("reversing").get<double>() + p.at("forward").get<double>(), 1.0, 1e-9);
+    EXPECT_NEAR(p.at("left").get<double>() + p.at("right").get<double>() + p.at("straight").get<double>(), 1.0, 1e-9);
+  }
+  EXPECT_FALSE(d.contains("boundaries"));
+}
+
+TEST(EvaluateSkillsCommand, RefusesTheTrainingSeedAndAModelOfAnotherTask) {
+  const auto same = run_skillcoach("evaluate-skills --task writing --seed 3 --model " + test::tiny_model("writing").string());
+  EXPECT_EQ(same.exit_code, 2) << same.output;
+  EXPECT_NE(same.output.find("seed the model was trained with"), std::string::npos) << same.output;
+  const auto other = run_skillcoach("evaluate-skills --task parking --model " + test::tiny_model("writing").string());
+  EXPECT_EQ(other.exit_code, 2) << other.output;
+  EXPECT_EQ(test::count_lines(other.output), 1) << other.output;
+}
+
+}  // namespace
+}  // namespace sc

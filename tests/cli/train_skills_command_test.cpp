@@ -1,0 +1,87 @@
+// `skillcoach train-skills` end to end (tiny runs: a few demonstrations, one or two iterations).
+#include <gtest/gtest.h>
+
+#include "tests/cli/skills_cli_fixture.hpp"
+
+namespace sc {
+namespace {
+
+using test::run_skillcoach;
+using test::scratch_path;
+
+TEST(TrainSkillsCommand, SameSeedGivesTheSameModelBytesAndAnotherSeedDoesNot) {
+  const auto a = scratch_path("train_skills", "a.pt"), b = scratch_path("train_skills", "b.pt"),
+             c = scratch_path("train_skills", "c.pt");
+  const std::string common = "train-skills --task writing --demos 6 --iterations 2 ";
+  ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + a.string()).exit_code, 0);
+  ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + b.string()).exit_code, 0);
+  ASSERT_EQ(run_skillcoach(common + "--seed 6 --out " + c.string()).exit_code, 0);
+  EXPECT_EQ(test::read_bytes(a), test::read_bytes(b));
+  EXPECT_NE(test::read_bytes(a), test::read_bytes(c));
+}
+
+TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
+  const auto model = scratch_path("train_skills", "sidecar.pt");
+  const auto r = run_skillcoach("train-skills --task parking --demos 5 --iterations 2 --seed 7 --out " + model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json s = read_json_file(model.string() + ".json");
+  EXPECT_EQ(s.at("task"), "parking");
+  EXPECT_EQ(s.at("seed"), 7);
+  EXPECT_EQ(s.at("config").at("mode"), "statediff+action");  // the paper's parking defaults
+  EXPECT_EQ(s.at("config").at("latent_size"), 16);
+  EXPECT_NE(s.at("data").get<std::string>().find("random classic scenarios"), std::string::npos) << s.at("data");
+  EXPECT_EQ(s.at("metrics").at("iterations_run"), 2);
+  EXPECT_TRUE(s.at("metrics").at("valid_action_reconstruction_error").is_number());
+  EXPECT_TRUE(s.at("git_revision").is_string());
+}
+
+TEST(TrainSkillsCommand, ProgressIsPlainLinesWhenStderrIsNotATerminal) {
+  const auto model = scratch_path("train_skills", "progress.pt");
+  const auto r = run_skillcoach("train-skills --task writing --demos 6 --iterations 3 --seed 1 --out " + model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find('\r'), std::string::npos);
+  EXPECT_NE(r.output.find("it 1/3  loss"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("it 3/3  loss"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("valid "), std::string::npos) << r.output;
+}
+
+TEST(TrainSkillsCommand, TrainsOnAFolderOfTrialFiles) {
+  const auto dir = scratch_path("train_skills", "data");
+  std::filesystem::create_directories(dir);
+  for (int i = 0; i < 3; ++i)
+    std::filesystem::copy_file(test::wavy_writing_trial("wavy.json"), dir / ("trial" + std::to_string(i) + ".json"),
+                               std::filesystem::copy_options::overwrite_existing);
+  const auto model = scratch_path("train_skills", "from_data.pt");
+  const auto r = run_skillcoach("train-skills --task writing --data " + dir.string() + " --iterations 1 --out " + model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_json_file(model.string() + ".json").at("data").get<std::string>().find("3 writing trial files"),
+            std::string::npos);
+}
+
+TEST(TrainSkillsCommand, BadTrialFileIsOneErrorLineAndExitTwo) {
+  const auto dir = scratch_path("train_skills", "bad_data");
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(test::wavy_writing_trial("wavy2.json"), dir / "good.json",
+                             std::filesystem::copy_options::overwrite_existing);
+  test::write_bytes(dir / "broken.json", "{\"task\": \"writing\", \"points\": [[0, 1], [2");
+  const auto r = run_skillcoach("train-skills --task writing --data " + dir.string() + " --out " +
+                                scratch_path("train_skills", "never.pt").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("skillcoach: error: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("broken.json"), std::string::npos) << r.output;
+  EXPECT_EQ(test::count_lines(r.output.substr(r.output.find("skillcoach: error: "))), 1) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(scratch_path("train_skills", "never.pt")));
+}
+
+TEST(TrainSkillsCommand, ParkingTrialInAWritingFolderIsRefused) {
+  const auto dir = scratch_path("train_skills", "mixed");
+  std::filesystem::create_directories(dir);
+  write_json_file(dir / "parking.json", Json{{"task", "parking"}});
+  const auto r = run_skillcoach("train-skills --task writing --data " + dir.string() + " --out " +
+                                scratch_path("train_skills", "never2.pt").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("parking.json: not a writing trial"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sc

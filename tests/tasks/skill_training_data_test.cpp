@@ -1,0 +1,67 @@
+#include "teaching/tasks/skill_training_data.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "engine/core/error.hpp"
+#include "engine/core/json_file.hpp"
+#include "tests/support/scratch_files.hpp"
+
+namespace sc {
+namespace {
+
+TEST(SkillTrainingData, WritingWordsCarryTheirCharacterBoundaries) {
+  const SkillDataSet data = generate_writing_demos(5, 0);
+  ASSERT_EQ(data.demos.size(), 5u);
+  for (const SkillDemo& d : data.demos) {
+    EXPECT_EQ(d.label.size(), 8u);  // the reference's generator: 8-symbol words
+    ASSERT_EQ(d.true_boundaries.size(), 7u) << d.label;
+    EXPECT_GT(d.true_boundaries.front(), 0);
+    EXPECT_LT(d.true_boundaries.back(), d.steps.length());
+    EXPECT_TRUE(std::is_sorted(d.true_boundaries.begin(), d.true_boundaries.end()));
+    EXPECT_EQ(d.steps.action_dim, 2);
+  }
+  EXPECT_EQ(generate_writing_demos(5, 0).demos[3].label, data.demos[3].label);  // deterministic
+}
+
+TEST(SkillTrainingData, ParkingDemosAreParkedExpertPlans) {
+  const SkillDataSet data = generate_parking_demos(3, 11);
+  ASSERT_FALSE(data.demos.empty());
+  for (const SkillDemo& d : data.demos) {
+    EXPECT_EQ(d.steps.state_dim, 12);
+    EXPECT_GT(d.steps.length(), 5);
+  }
+  EXPECT_NE(data.description.find("out of 3 random classic scenarios"), std::string::npos) << data.description;
+}
+
+TEST(SkillTrainingData, SplitHoldsOutATenthChosenByTheSeed) {
+  const SkillDataSet data = generate_writing_demos(20, 1);
+  const DataSplit a = split_demos(data, 0.1, 4), b = split_demos(data, 0.1, 4), c = split_demos(data, 0.1, 5);
+  EXPECT_EQ(a.valid.size(), 2u);
+  EXPECT_EQ(a.train.size(), 18u);
+  EXPECT_EQ(a.valid[0].actions, b.valid[0].actions);
+  std::set<std::size_t> lengths_a, lengths_c;
+  for (const auto& s : a.valid) lengths_a.insert(s.actions.size());
+  for (const auto& s : c.valid) lengths_c.insert(s.actions.size());
+  EXPECT_NE(lengths_a, lengths_c);  // another seed holds out other words
+  EXPECT_EQ(split_demos(SkillDataSet{"writing", "", {data.demos[0], data.demos[1]}}, 0.1, 0).valid.size(), 1u);
+}
+
+TEST(SkillTrainingData, FolderWithoutTrialsOrWithAForeignTrialIsRefused) {
+  const auto dir = test::scratch_path("skill_training_data", "folder");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  EXPECT_THROW(read_task_demos("writing", dir), InputError);
+  write_json_file(dir / "a.json", Json{{"task", "parking"}});
+  try {
+    read_task_demos("writing", dir);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a.json"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sc
