@@ -1,0 +1,104 @@
+// The synthetic-student protocol end to end on a small parking kit (16 expert demos, time-heuristic skills,
+// tiny networks and epochs): seconds, not minutes. Checks determinism and the protocol's invariants, not
+// the paper's findings (docs/students.md has the full run).
+#include "teaching/students/student_experiment.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/students/student_report.hpp"
+#include "teaching/tasks/parking_kit.hpp"
+
+namespace sc {
+namespace {
+
+const ParkingKit& small_kit() {
+  static const ParkingKit kit = [] {
+    std::vector<ParkingTrial> pool = load_or_generate_parking_pool(default_parking_pool_file(), {}).trials;
+    pool.resize(16);
+    return ParkingKit(std::make_shared<TimeHeuristicExtractor>(kParkingTimeSlices), "", std::move(pool));
+  }();
+  return kit;
+}
+
+StudentExperimentConfig tiny_config(std::uint64_t seed) {
+  StudentExperimentConfig c = StudentExperimentConfig::paper();
+  for (SyntheticStudentRecipe& r : c.students) {
+    r.epochs = r.kind == SyntheticStudentKind::HalfTrained ? 2 : 4;
+    r.hidden = 32;
+  }
+  c.seed = seed;
+  c.diagnosis_scenarios = 4;
+  c.finetune_epochs = 2;
+  c.evaluation_sets = 3;
+  c.scenarios_per_set = 2;
+  return c;
+}
+
+TEST(StudentExperiment, PaperConfigurationMatchesTheAppendix) {
+  const StudentExperimentConfig c = StudentExperimentConfig::paper();
+  ASSERT_EQ(c.students.size(), 2u);
+  EXPECT_EQ(c.students[0].kind, SyntheticStudentKind::HalfTrained);
+  EXPECT_EQ(c.students[0].epochs, 50);
+  EXPECT_EQ(c.students[0].reverse_keep_fraction, 1.0);
+  EXPECT_EQ(c.students[1].kind, SyntheticStudentKind::ReversingDifficulty);
+  EXPECT_EQ(c.students[1].epochs, 400);
+  EXPECT_EQ(c.students[1].reverse_keep_fraction, 0.2);
+  EXPECT_EQ(c.diagnosis_scenarios, 25);
+  EXPECT_EQ(c.num_targets, 3);
+  EXPECT_EQ(c.finetune_epochs, 100);
+  EXPECT_EQ(c.evaluation_sets, 15);
+}
+
+TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
+  const StudentExperimentResult r = run_student_experiment(small_kit(), tiny_config(1));
+  EXPECT_EQ(r.pool_size, 16);
+  EXPECT_EQ(r.diagnosis_scenarios.size(), 4u);
+  ASSERT_EQ(r.students.size(), 2u);
+  for (const StudentResult& s : r.students) {
+    EXPECT_FALSE(s.diagnosis.targets.empty());
+    EXPECT_LE(s.diagnosis.targets.size(), 3u);
+    EXPECT_EQ(s.before_reward.size(), 3u);
+    ASSERT_EQ(s.conditions.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+      const int pairs = s.conditions[0].pairs[static_cast<std::size_t>(k)];
+      EXPECT_GT(pairs, 0);
+      for (const ConditionResult& c : s.conditions) {
+        EXPECT_EQ(c.pairs[static_cast<std::size_t>(k)], pairs) << condition_name(c.condition) << " set " << k;
+        EXPECT_LE(c.reward[static_cast<std::size_t>(k)], 0.0);
+        EXPECT_GE(c.success[static_cast<std::size_t>(k)], 0.0);
+        EXPECT_LE(c.success[static_cast<std::size_t>(k)], 1.0);
+      }
+    }
+  }
+  // The reversing-difficulty student saw 20 % of the expert's reverse-acceleration pairs, the other all.
+  const StudentResult& half = r.students[0];
+  const StudentResult& reversing = r.students[1];
+  EXPECT_EQ(half.reverse_pairs_kept, half.reverse_pairs_total);
+  ASSERT_GT(reversing.reverse_pairs_total, 10);
+  EXPECT_EQ(reversing.reverse_pairs_kept, std::lround(0.2 * reversing.reverse_pairs_total));
+  EXPECT_EQ(reversing.training_pairs, r.expert_pairs - (reversing.reverse_pairs_total - reversing.reverse_pairs_kept));
+}
+
+TEST(StudentExperiment, SameSeedSameNumbersOtherSeedOtherNumbers) {
+  const Json a = student_experiment_json(run_student_experiment(small_kit(), tiny_config(5)), small_kit());
+  const Json b = student_experiment_json(run_student_experiment(small_kit(), tiny_config(5)), small_kit());
+  EXPECT_EQ(a, b);
+  const Json c = student_experiment_json(run_student_experiment(small_kit(), tiny_config(6)), small_kit());
+  EXPECT_NE(a.at("students"), c.at("students"));
+}
+
+TEST(StudentExperiment, RefusesEmptyConfigurations) {
+  StudentExperimentConfig c = tiny_config(0);
+  c.evaluation_sets = 0;
+  EXPECT_THROW(run_student_experiment(small_kit(), c), InputError);
+  c = tiny_config(0);
+  c.students.clear();
+  EXPECT_THROW(run_student_experiment(small_kit(), c), InputError);
+}
+
+}  // namespace
+}  // namespace sc
