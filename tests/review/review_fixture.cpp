@@ -1,5 +1,9 @@
 #include "tests/review/review_fixture.hpp"
 
+#include <unistd.h>
+
+#include <string>
+
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -32,7 +36,9 @@ Json attempt(const Json& reference, double skill, std::uint64_t seed, std::size_
 
 ReviewFixture build_fixture() {
   ReviewFixture fixture;
-  fixture.data_dir = scratch_path("review", "fixture_parking");
+  // One directory per process: ctest runs each test in its own process, two at a time, and two processes
+  // rebuilding one shared fixture raced (a report test saw the database change under it).
+  fixture.data_dir = scratch_path("review", "fixture_parking_" + std::to_string(::getpid()));
   std::filesystem::remove_all(fixture.data_dir);
   records::LearnerStore store(fixture.data_dir);
   int tick = 0;

@@ -1,5 +1,7 @@
 #include "app/gui/screens/learn_flow.hpp"
 
+#include <unistd.h>
+
 #include <filesystem>
 
 #include "app/gui/screens/learn_scripted_learner.hpp"
@@ -57,6 +59,14 @@ void LearnFlow::start(const AppServices& services, bool resume) {
   session_ = std::make_unique<TrainingSession>(task_kit, db, settings, clock_of(*this));
 }
 
+LearnFlow::~LearnFlow() {
+  if (scratch_dir.empty()) return;
+  session_.reset();  // close the database before its directory goes
+  store_.reset();
+  std::error_code ignored;
+  std::filesystem::remove_all(scratch_dir, ignored);
+}
+
 LearnFlow& learn_flow(AppServices& services) {
   if (!services.learn_flow) services.learn_flow = std::make_shared<LearnFlow>();
   return *services.learn_flow;
@@ -100,9 +110,13 @@ LearnFlow& learn_flow_for_screenshot(AppServices& services, SessionPhase phase, 
   if (flow.session()) return flow;
   flow.learner = "Ada";
   flow.headless_clock = true;
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("skillcoach-screenshot-" + std::string(to_string(services.task)));
+  // One directory per process (removed again with the flow): screenshot processes run in parallel (ctest -j)
+  // and a shared directory let one process's session appear in another's review screenshot.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("skillcoach-screenshot-" + std::string(to_string(services.task)) + "-" +
+                                     std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
+  flow.scratch_dir = dir;
   services.options.data_dir = dir.string();
   flow.start(services, false);
   TrainingSession& s = *flow.session();

@@ -7,6 +7,7 @@
 // Headless screenshots have no learner: learn_flow_for_screenshot() builds a deterministic session (fixed
 // seed, fixed timestamps, scripted learner, a fresh database in a temporary directory) and plays it up to
 // the phase the screen shows, so every screen of the flow has a golden with real data.
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -34,6 +35,12 @@ class LearnFlow {
   std::optional<records::ResumePoint> unfinished(const AppServices& services);
 
   bool headless_clock = false;  // fixed timestamps (screenshots)
+  std::filesystem::path scratch_dir;  // screenshots' temporary database directory, removed with the flow
+
+  LearnFlow() = default;
+  LearnFlow(const LearnFlow&) = delete;
+  LearnFlow& operator=(const LearnFlow&) = delete;
+  ~LearnFlow();
 
  private:
   std::string kit_task_;
