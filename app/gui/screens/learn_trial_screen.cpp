@@ -202,14 +202,9 @@ class LearnTrialScreen final : public Screen {
 
   void draw_header(UiContext& ui) {
     const float s = ui.ui_scale;
-    ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
-    ImGui::Begin("learn_trial_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
-    ImGui::PushFont(ui.fonts.bold);
-    ImGui::TextUnformatted(stage_ == Stage::result ? result_title_.c_str()
-                                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false).c_str());
-    ImGui::PopFont();
-    ImGui::SameLine(0, 30 * s);
+    learn_ui::begin_header_bar(ui, "learn_trial_header",
+                               stage_ == Stage::result ? result_title_
+                                                       : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::driving)
       ImGui::Text("Time left %.1f s", std::max(0.0, time_limit_ - drive_->time_seconds()));
     else if (stage_ == Stage::demo)
@@ -218,7 +213,7 @@ class LearnTrialScreen final : public Screen {
       ImGui::SameLine(0, 30 * s);
       ImGui::TextDisabled("Follow the ghost band (blue: forward, pink: reversing). Esc pauses.");
     }
-    ImGui::End();
+    learn_ui::end_header_bar();
   }
 
   void draw_countdown(UiContext& ui) {

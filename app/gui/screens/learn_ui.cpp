@@ -16,6 +16,19 @@ void begin_card(UiContext& ui, const char* id, float width, float y_anchor) {
                    ImGuiWindowFlags_AlwaysAutoResize);
 }
 
+void begin_header_bar(UiContext& ui, const char* id, const std::string& title) {
+  const float s = ui.ui_scale;
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
+  ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushFont(ui.fonts.bold);
+  ImGui::TextUnformatted(title.c_str());
+  ImGui::PopFont();
+  ImGui::SameLine(0, 30 * s);
+}
+
+void end_header_bar() { ImGui::End(); }
+
 void end_card() {
   ImGui::End();
   ImGui::PopStyleVar();

@@ -21,6 +21,10 @@ bool primary_button(UiContext& ui, const char* label, float width = 0.0f);
 bool confirm_pressed(const FrameInput& input);
 // Esc or gamepad Start pressed this frame.
 bool pause_pressed(const FrameInput& input);
+// The trial screens' top bar (full width, 56 px at scale 1) with `title` in bold; returns after the title,
+// on the same line, for the screen's own hints. Close with end_header_bar().
+void begin_header_bar(UiContext& ui, const char* id, const std::string& title);
+void end_header_bar();
 // "-0.123 (0 is the expert's result)".
 std::string reward_text(double reward);
 

@@ -180,20 +180,14 @@ class LearnWriteTrialScreen final : public Screen {
   }
 
   void draw_header(UiContext& ui) {
-    const float s = ui.ui_scale;
-    ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width), 56 * s));
-    ImGui::Begin("learn_write_header", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoSavedSettings);
-    ImGui::PushFont(ui.fonts.bold);
-    ImGui::TextUnformatted(stage_ == Stage::result ? result_title_.c_str()
-                                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false).c_str());
-    ImGui::PopFont();
-    ImGui::SameLine(0, 30 * s);
+    learn_ui::begin_header_bar(ui, "learn_write_header",
+                               stage_ == Stage::result ? result_title_
+                                                       : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::demo)
       ImGui::TextUnformatted("Watch the ghost pen: where each stroke starts, its direction, where the pen lifts.");
     else if (stage_ == Stage::writing)
       ImGui::Text("Time limit %.0f s from your first touch", time_limit_);
-    ImGui::End();
+    learn_ui::end_header_bar();
   }
 
   void draw_panel(UiContext& ui, float width, float top) {
