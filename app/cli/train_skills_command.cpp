@@ -1,4 +1,4 @@
-// skillcoach train-skills --task parking|writing [--data DIR] [--iterations N] [--seed S] --out FILE:
+// skillcoach train-skills --task parking|writing [--data DIR] [--iterations N] [--seed S] [--set K=V] --out FILE:
 // trains the task's CompILE model at the paper's defaults (CompileConfig::defaults_for) on the expert's
 // demonstrations (generated when no --data is given), holding out 10 % for early stopping, and writes the
 // model file plus its JSON sidecar. Same seed and data on the same machine -> the same model bytes.
@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/cli/command_registry.hpp"
 #include "app/cli/training_progress_bar.hpp"
@@ -27,7 +28,25 @@ struct TrainArgs {
   int demos = 1000;
   int iterations = -1;  // -1: the task's default
   unsigned long long seed = 0;
+  std::vector<std::string> overrides;  // --set key=value
 };
+
+// Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
+// spelling (the sidecar's) and the usual range checks (CompileConfig::validate). Numbers are read as JSON.
+CompileConfig with_overrides(CompileConfig config, const std::vector<std::string>& overrides) {
+  Json doc = to_json(config);
+  for (const std::string& item : overrides) {
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq);
+    if (eq == std::string::npos || !doc.contains(key) || key == "task")
+      throw InputError("--set " + item, "expected key=value with a key of the model config (e.g. prior_rate=10)");
+    const std::string value = item.substr(eq + 1);
+    doc[key] = doc[key].is_string() ? Json(value) : parse_json_text(value, "--set " + item);
+  }
+  CompileConfig out = compile_config_from_json(JsonView(doc, "--set"));
+  out.validate("--set");
+  return out;
+}
 
 std::string run_and_read(const std::string& command) {
   std::string text;
@@ -55,6 +74,7 @@ int run(const TrainArgs& args) {
   CompileConfig config = CompileConfig::defaults_for(args.task);
   config.seed = args.seed;
   if (args.iterations >= 0) config.iterations = args.iterations;
+  config = with_overrides(config, args.overrides);
   std::fprintf(stderr, "%s: %s demonstrations...\n", args.task.c_str(), args.data.empty() ? "generating" : "reading");
   const SkillDataSet data =
       args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed) : read_task_demos(args.task, args.data);
@@ -91,6 +111,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--iterations", args->iterations, "Maximum passes over the training data (default: the task's)")
       ->check(CLI::Range(0, 1000000));
   sub.add_option("--seed", args->seed, "Seed of the generated data, the split and the training")->capture_default_str();
+  sub.add_option("--set", args->overrides, "Override a model setting of the task's defaults, e.g. --set prior_rate=10 "
+                 "(keys as in the model's JSON sidecar; repeatable)");
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }
