@@ -21,7 +21,9 @@ std::string duration(double seconds) {
 }  // namespace
 
 std::string describe_training_progress(const TrainingProgress& p) {
-  std::string line = "it " + std::to_string(p.iteration) + "/" + std::to_string(p.iterations);
+  std::string line;
+  if (p.restarts > 1) line = "run " + std::to_string(p.restart + 1) + "/" + std::to_string(p.restarts) + "  ";
+  line += "it " + std::to_string(p.iteration) + "/" + std::to_string(p.iterations);
   line += format("  loss %.4g (nll_a %.4g", p.loss, p.nll_action);
   if (p.nll_state != 0.0) line += format(" nll_s %.4g", p.nll_state);
   line += format(" kl_z %.3g kl_b %.3g)", p.kl_z, p.kl_b);

@@ -85,6 +85,7 @@ void CompileConfig::validate(const std::string& where) const {
   need(iterations >= 0, "iterations must be >= 0");
   need(eval_interval >= 1, "eval_interval must be >= 1");
   need(patience >= 1, "patience must be >= 1");
+  need(restarts >= 1 && restarts <= 64, "restarts must be in 1..64");
   need(resample_step >= 0.0, "resample_step must be >= 0");
 }
 
@@ -106,6 +107,7 @@ Json to_json(const CompileConfig& c) {
               {"eval_interval", c.eval_interval},
               {"patience", c.patience},
               {"seed", c.seed},
+              {"restarts", c.restarts},
               {"resample_step", c.resample_step}};
 }
 
@@ -135,6 +137,8 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   c.patience = as_int("patience");
   c.seed = static_cast<std::uint64_t>(v.at("seed").integer());
   c.resample_step = v.at("resample_step").number();
+  // Absent in models written before restarts existed (they were single runs).
+  if (const auto restarts = v.find("restarts")) c.restarts = static_cast<int>(restarts->integer());
   return c;
 }
 

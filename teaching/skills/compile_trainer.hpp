@@ -6,8 +6,13 @@
 // measured; training stops after config.patience checks without improvement and the BEST weights are
 // kept. (The reference measured on its eval split and saved every 5 epochs rather than the best, so its
 // shipped models were arbitrary snapshots: reference-facts §3.6, §6.5, §6.10.)
-// Deterministic: the same config (seed) and data on the same machine give byte-identical model files.
+// With config.restarts > 1, that many runs (seeds seed, seed + 1, ...) train in parallel (one thread per
+// core, each run single-threaded) and the run with the lowest validation NLL is kept; ties go to the
+// lower seed. Without a validation split the first run is kept.
+// Deterministic: the same config (seed) and data on the same machine give byte-identical model files,
+// whatever the thread scheduling (runs share nothing).
 #include <functional>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -16,6 +21,8 @@
 namespace sc {
 
 struct TrainingProgress {
+  int restart = 0;        // 0-based run of config.restarts (runs may report interleaved)
+  int restarts = 1;
   int iteration = 0;      // 1-based
   int iterations = 0;     // configured maximum
   double loss = 0.0;      // training loss terms, mean over the iteration's trajectories
@@ -30,6 +37,8 @@ struct TrainingProgress {
 };
 
 struct TrainingSummary {
+  int restart = 0;                   // the run whose weights were kept (lowest validation NLL)
+  std::vector<double> restart_valid_nll;  // best validation NLL of every run (NaN without a valid split)
   int iterations_run = 0;
   int best_iteration = 0;  // iteration whose weights were kept (0 = untrained)
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
@@ -46,6 +55,7 @@ class CompileTrainer {
 
   // `train` must not be empty; `valid` may be (then the last weights are kept). Dimensions must match the
   // config (state_dim is only checked in state modes). Throws InputError for bad data or config.
+  // `progress` is called from the training threads, one call at a time.
   CompileModel train(const std::vector<StepSequence>& train, const std::vector<StepSequence>& valid,
                      const ProgressCallback& progress = {});
   const TrainingSummary& summary() const { return summary_; }

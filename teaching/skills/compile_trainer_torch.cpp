@@ -1,7 +1,12 @@
-// CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept.
+// CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept;
+// several runs (restarts) in parallel, the best by validation NLL kept.
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <numeric>
+#include <thread>
 
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
@@ -15,7 +20,10 @@ using compile_detail::CompileNetwork;
 
 Json TrainingSummary::to_json() const {
   auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-  return Json{{"iterations_run", iterations_run}, {"best_iteration", best_iteration},
+  Json restarts = Json::array();
+  for (double v : restart_valid_nll) restarts.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+  return Json{{"restart", restart}, {"restart_valid_nll", std::move(restarts)},
+              {"iterations_run", iterations_run}, {"best_iteration", best_iteration},
               {"best_valid_nll", num(best_valid_nll)}, {"final_loss", num(final_loss)},
               {"seconds", seconds}, {"stopped_early", stopped_early}};
 }
@@ -51,41 +59,40 @@ double validation_nll(const CompileNetwork& net, const std::vector<Batch>& batch
 
 }  // namespace
 
-CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const std::vector<StepSequence>& valid,
-                                   const ProgressCallback& progress) {
-  configure_torch_threads();
-  config_.validate("compile config");
-  if (train.empty()) throw InputError("training data", "no trajectories");
-  const auto train_steps = to_model_inputs(train, config_, "training trajectory");
-  const auto valid_steps = to_model_inputs(valid, config_, "validation trajectory");
-  std::vector<std::size_t> usable;
-  for (std::size_t i = 0; i < train_steps.size(); ++i)
-    if (train_steps[i].steps.length() > 0) usable.push_back(i);
-  if (usable.empty()) throw InputError("training data", "every trajectory is empty");
-  const std::vector<Batch> valid_batches = fixed_batches(valid_steps, config_);
+namespace {
 
+// One training run from `config.seed` (see CompileTrainer): its weights and summary.
+struct RunResult {
+  std::unique_ptr<CompileModel::Impl> impl;
+  TrainingSummary summary;
+};
+
+RunResult train_run(const CompileConfig& config, int restart, const std::vector<ModelSteps>& train_steps,
+                    std::vector<std::size_t> usable, const std::vector<Batch>& valid_batches,
+                    const std::function<void(TrainingProgress&)>& report) {
   const auto start_time = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(); };
-  auto generator = at::detail::createCPUGenerator(config_.seed);
-  auto impl = std::make_unique<CompileModel::Impl>(CompileModel::Impl{CompileNetwork(config_, generator)});
-  CompileNetwork& net = impl->net;
+  auto generator = at::detail::createCPUGenerator(config.seed);
+  RunResult out{std::make_unique<CompileModel::Impl>(CompileModel::Impl{CompileNetwork(config, generator)}), {}};
+  CompileNetwork& net = out.impl->net;
+  TrainingSummary& summary = out.summary;
   std::vector<torch::Tensor> params = net.parameters();
-  torch::optim::Adam optimizer(params, torch::optim::AdamOptions(config_.learning_rate));
-  Rng shuffle_rng = Rng(config_.seed).fork(0x5eed5u);
+  torch::optim::Adam optimizer(params, torch::optim::AdamOptions(config.learning_rate));
+  Rng shuffle_rng = Rng(config.seed).fork(0x5eed5u);
 
-  summary_ = TrainingSummary{};
   std::vector<torch::Tensor> best;
   int checks_without_improvement = 0;
-  for (int it = 1; it <= config_.iterations; ++it) {
+  for (int it = 1; it <= config.iterations; ++it) {
     for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
     TrainingProgress p;
+    p.restart = restart;
     p.iteration = it;
-    p.iterations = config_.iterations;
-    for (std::size_t first = 0; first < usable.size(); first += static_cast<std::size_t>(config_.batch_size)) {
+    p.iterations = config.iterations;
+    for (std::size_t first = 0; first < usable.size(); first += static_cast<std::size_t>(config.batch_size)) {
       std::vector<const StepSequence*> chunk;
-      for (std::size_t i = first; i < std::min(usable.size(), first + static_cast<std::size_t>(config_.batch_size)); ++i)
+      for (std::size_t i = first; i < std::min(usable.size(), first + static_cast<std::size_t>(config.batch_size)); ++i)
         chunk.push_back(&train_steps[usable[i]].steps);
-      const Batch batch = compile_detail::make_batch(chunk, config_);
+      const Batch batch = compile_detail::make_batch(chunk, config);
       const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
       optimizer.zero_grad();
       losses.total.backward();
@@ -100,14 +107,14 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
     if (!std::isfinite(p.loss))
       throw InputError("compile training", "loss became non-finite at iteration " + std::to_string(it) +
                                                " (learning rate too high or data not normalised?)");
-    summary_.iterations_run = it;
-    summary_.final_loss = p.loss;
-    const bool check = !valid_batches.empty() && (it % config_.eval_interval == 0 || it == config_.iterations);
+    summary.iterations_run = it;
+    summary.final_loss = p.loss;
+    const bool check = !valid_batches.empty() && (it % config.eval_interval == 0 || it == config.iterations);
     if (check) {
       p.valid_nll = validation_nll(net, valid_batches);
-      if (!(p.valid_nll >= summary_.best_valid_nll)) {  // also true while best is NaN
-        summary_.best_valid_nll = p.valid_nll;
-        summary_.best_iteration = it;
+      if (!(p.valid_nll >= summary.best_valid_nll)) {  // also true while best is NaN
+        summary.best_valid_nll = p.valid_nll;
+        summary.best_iteration = it;
         best.clear();
         for (const auto& t : params) best.push_back(t.detach().clone());
         checks_without_improvement = 0;
@@ -116,11 +123,11 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
         ++checks_without_improvement;
       }
     }
-    p.best_valid_nll = summary_.best_valid_nll;
+    p.best_valid_nll = summary.best_valid_nll;
     p.elapsed_seconds = elapsed();
-    if (progress) progress(p);
-    if (checks_without_improvement >= config_.patience) {
-      summary_.stopped_early = true;
+    report(p);
+    if (checks_without_improvement >= config.patience) {
+      summary.stopped_early = true;
       break;
     }
   }
@@ -128,10 +135,64 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
     torch::NoGradGuard no_grad;
     for (std::size_t i = 0; i < params.size(); ++i) params[i].copy_(best[i]);
   } else {
-    summary_.best_iteration = summary_.iterations_run;
+    summary.best_iteration = summary.iterations_run;
   }
-  summary_.seconds = elapsed();
-  return CompileModel(std::move(impl));
+  summary.seconds = elapsed();
+  return out;
+}
+
+}  // namespace
+
+CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const std::vector<StepSequence>& valid,
+                                   const ProgressCallback& progress) {
+  configure_torch_threads();
+  config_.validate("compile config");
+  if (train.empty()) throw InputError("training data", "no trajectories");
+  const auto train_steps = to_model_inputs(train, config_, "training trajectory");
+  const auto valid_steps = to_model_inputs(valid, config_, "validation trajectory");
+  std::vector<std::size_t> usable;
+  for (std::size_t i = 0; i < train_steps.size(); ++i)
+    if (train_steps[i].steps.length() > 0) usable.push_back(i);
+  if (usable.empty()) throw InputError("training data", "every trajectory is empty");
+  const std::vector<Batch> valid_batches = fixed_batches(valid_steps, config_);
+
+  const auto start_time = std::chrono::steady_clock::now();
+  std::mutex report_mutex;
+  auto report = [&](TrainingProgress& p) {
+    p.restarts = config_.restarts;
+    const std::lock_guard<std::mutex> lock(report_mutex);
+    if (progress) progress(p);
+  };
+  std::vector<RunResult> runs(static_cast<std::size_t>(config_.restarts));
+  std::vector<std::exception_ptr> errors(runs.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t r; (r = next++) < runs.size();) {
+      try {
+        CompileConfig run_config = config_;
+        run_config.seed = config_.seed + r;
+        runs[r] = train_run(run_config, static_cast<int>(r), train_steps, usable, valid_batches, report);
+      } catch (...) {
+        errors[r] = std::current_exception();
+      }
+    }
+  };
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::thread> threads;
+  for (std::size_t i = 1; i < std::min(cores, runs.size()); ++i) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+
+  std::size_t kept = 0;
+  for (std::size_t r = 1; r < runs.size(); ++r)
+    if (runs[r].summary.best_valid_nll < runs[kept].summary.best_valid_nll) kept = r;
+  summary_ = runs[kept].summary;
+  summary_.restart = static_cast<int>(kept);
+  for (const RunResult& run : runs) summary_.restart_valid_nll.push_back(run.summary.best_valid_nll);
+  summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  return CompileModel(std::move(runs[kept].impl));
 }
 
 }  // namespace sc
