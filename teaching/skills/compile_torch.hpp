@@ -42,6 +42,9 @@ struct PackedLstmRun {
   // Step t from the projected inputs of its active rows; h_init/c_init [rows, H] feed step 0.
   void step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
             const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask);
+  // The same on raw contiguous data: xproj_t [active, 4H], mask [N] (whole packed mask) or null.
+  void step(const Packing& packing, std::size_t t, const float* xproj_t, const float* h_init, const float* c_init,
+            const float* w_hh, const float* mask);
 };
 // `replay`: a run already computed with the same inputs; its buffers are reused instead of recomputing
 // the recurrence (the decoder computes its steps once, without autograd, to know its own feedback).
