@@ -98,6 +98,13 @@ struct Batch {
 // `steps[i]` must match the config's dimensions and have length >= 1.
 Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config);
 
+// Decoder pass 1 (no autograd): open-loop steps from (h_init, c_init) [rows, H] over `packing`, writing each
+// step's input into fb_action [N, A] / fb_state [N, S] (zero at step 0; fb_state unused without states) and
+// the LSTM buffers into `run`.
+void run_decoder_feedback(const CompileNetwork& net, const Packing& packing, const torch::Tensor& h_init,
+                          const torch::Tensor& c_init, torch::Tensor& fb_action, torch::Tensor& fb_state,
+                          PackedLstmRun& run);
+
 // ---- forward pass -------------------------------------------------------------------------------------
 struct LossTerms {
   torch::Tensor total, nll_action, nll_state, kl_z, kl_b;  // scalars (mean over the batch)
