@@ -250,7 +250,8 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
   return out;
 }
 
-HardReadout hard_readout(const CompileNetwork& net, const Batch& batch) {
+// The training-time encoder in eval mode: the definition hard_readout (compile_inference_torch.cpp) must match.
+HardReadout hard_readout_reference(const CompileNetwork& net, const Batch& batch) {
   const Encoded enc = encode(net, batch, false, nullptr, false);
   HardReadout out;
   out.boundaries.resize(static_cast<std::size_t>(batch.size));

@@ -117,8 +117,11 @@ struct HardReadout {
 // Training (relaxed Gumbel-softmax samples drawn from `generator`) or evaluation (hard argmax, generator
 // unused) losses of one batch.
 LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool relaxed, at::Generator* generator);
-// Inference: encoder and heads only (no decoder), hard argmax; rows in batch order.
+// Inference: encoder and heads only (no decoder), hard argmax; rows in the caller's order. The fast path
+// (each pass runs from its hard start, raw-row LSTM steps); hard_readout_reference computes the same through
+// the training-time encoder and is kept to test that they agree exactly.
 HardReadout hard_readout(const CompileNetwork& net, const Batch& batch);
+HardReadout hard_readout_reference(const CompileNetwork& net, const Batch& batch);
 
 }  // namespace sc::compile_detail
 
