@@ -164,19 +164,8 @@ Decoded decode(const CompileNetwork& net, const Batch& batch, const Encoded& enc
   compile_detail::PackedLstmRun run(packing, hid, fb_action.options());
   {
     torch::NoGradGuard no_grad;
-    const Tensor h_init = h0.detach(), c_init = c0.detach();
-    Tensor prev_a = torch::zeros({rows, a_dim}), prev_s = torch::zeros({rows, s_dim});
-    for (std::size_t j = 0; j < packing.active.size(); ++j) {
-      const std::int64_t n = packing.active[j], off = packing.offset[j];
-      fb_action.narrow(0, off, n).copy_(prev_a.narrow(0, 0, n));
-      fb_state.narrow(0, off, n).copy_(prev_s.narrow(0, 0, n));
-      const Tensor x = embed_decoder_input(net, prev_a.narrow(0, 0, n), prev_s.narrow(0, 0, n));
-      run.step(packing, j, net.dec_ih(x), h_init, c_init, net.dec_hh, Tensor());
-      if (j + 1 == packing.active.size()) break;
-      const Tensor h = run.h_out.narrow(0, off, n);
-      prev_a = torch::tanh(net.head_action(h));
-      if (cfg.uses_states()) prev_s = net.head_state(h);
-    }
+    const Tensor h_init = h0.detach().contiguous(), c_init = c0.detach().contiguous();
+    run_decoder_feedback(net, packing, h_init, c_init, fb_action, fb_state, run);
   }
   const Tensor xd = embed_decoder_input(net, fb_action, fb_state);
   const Tensor hd = packed_lstm(net.dec_ih(xd), h0, c0, net.dec_hh, Tensor(), packing, &run);
@@ -261,7 +250,8 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
   return out;
 }
 
-HardReadout hard_readout(const CompileNetwork& net, const Batch& batch) {
+// The training-time encoder in eval mode: the definition hard_readout (compile_inference_torch.cpp) must match.
+HardReadout hard_readout_reference(const CompileNetwork& net, const Batch& batch) {
   const Encoded enc = encode(net, batch, false, nullptr, false);
   HardReadout out;
   out.boundaries.resize(static_cast<std::size_t>(batch.size));

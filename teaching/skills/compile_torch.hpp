@@ -42,6 +42,9 @@ struct PackedLstmRun {
   // Step t from the projected inputs of its active rows; h_init/c_init [rows, H] feed step 0.
   void step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
             const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask);
+  // The same on raw contiguous data: xproj_t [active, 4H], mask [N] (whole packed mask) or null.
+  void step(const Packing& packing, std::size_t t, const float* xproj_t, const float* h_init, const float* c_init,
+            const float* w_hh, const float* mask);
 };
 // `replay`: a run already computed with the same inputs; its buffers are reused instead of recomputing
 // the recurrence (the decoder computes its steps once, without autograd, to know its own feedback).
@@ -95,6 +98,13 @@ struct Batch {
 // `steps[i]` must match the config's dimensions and have length >= 1.
 Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config);
 
+// Decoder pass 1 (no autograd): open-loop steps from (h_init, c_init) [rows, H] over `packing`, writing each
+// step's input into fb_action [N, A] / fb_state [N, S] (zero at step 0; fb_state unused without states) and
+// the LSTM buffers into `run`.
+void run_decoder_feedback(const CompileNetwork& net, const Packing& packing, const torch::Tensor& h_init,
+                          const torch::Tensor& c_init, torch::Tensor& fb_action, torch::Tensor& fb_state,
+                          PackedLstmRun& run);
+
 // ---- forward pass -------------------------------------------------------------------------------------
 struct LossTerms {
   torch::Tensor total, nll_action, nll_state, kl_z, kl_b;  // scalars (mean over the batch)
@@ -107,8 +117,11 @@ struct HardReadout {
 // Training (relaxed Gumbel-softmax samples drawn from `generator`) or evaluation (hard argmax, generator
 // unused) losses of one batch.
 LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool relaxed, at::Generator* generator);
-// Inference: encoder and heads only (no decoder), hard argmax; rows in batch order.
+// Inference: encoder and heads only (no decoder), hard argmax; rows in the caller's order. The fast path
+// (each pass runs from its hard start, raw-row LSTM steps); hard_readout_reference computes the same through
+// the training-time encoder and is kept to test that they agree exactly.
 HardReadout hard_readout(const CompileNetwork& net, const Batch& batch);
+HardReadout hard_readout_reference(const CompileNetwork& net, const Batch& batch);
 
 }  // namespace sc::compile_detail
 

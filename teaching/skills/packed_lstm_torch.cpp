@@ -1,9 +1,12 @@
 // A masked LSTM over packed sequences with a hand-written backward pass (see compile_torch.hpp).
-// Matrix products go through torch (OpenBLAS); the element-wise gate arithmetic runs in plain loops over
-// contiguous rows because per-op dispatch, not arithmetic, dominates at these sizes.
+// Steps run on raw rows (lstm_kernels: the BLAS torch uses plus plain loops) because per-op dispatch, not
+// arithmetic, dominates at these sizes.
 #include "teaching/skills/compile_torch.hpp"
 
 #include <algorithm>
+#include <cstring>
+
+#include "teaching/skills/lstm_kernels.hpp"
 
 namespace sc::compile_detail {
 
@@ -31,35 +34,27 @@ PackedLstmRun::PackedLstmRun(const Packing& packing, std::int64_t hid, const tor
 
 void PackedLstmRun::step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
                          const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask) {
-  const std::int64_t n = packing.active[t], off = packing.offset[t], hid = w_hh.size(1);
-  if (n == 0) return;
-  torch::Tensor h_prev = t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing.offset[t - 1], n);
-  torch::Tensor c_prev = t == 0 ? c_init.narrow(0, 0, n) : c_out.narrow(0, packing.offset[t - 1], n);
-  torch::Tensor g = gates.narrow(0, off, n);
-  torch::addmm_out(g, xproj_t, h_prev, w_hh.t());
-  g.narrow(1, 0, 3 * hid).sigmoid_();
-  g.narrow(1, 3 * hid, hid).tanh_();
-  const float* gp = g.data_ptr<float>();
-  const float* cp = c_prev.data_ptr<float>();
-  float* cr = c_raw.data_ptr<float>() + off * hid;
-  for (std::int64_t r = 0; r < n; ++r) {
-    const float* gr = gp + r * 4 * hid;
-    for (std::int64_t j = 0; j < hid; ++j) cr[r * hid + j] = gr[hid + j] * cp[r * hid + j] + gr[j] * gr[3 * hid + j];
-  }
-  torch::Tensor tanh_rows = tanh_c.narrow(0, off, n);
-  torch::tanh_out(tanh_rows, c_raw.narrow(0, off, n));
-  const float* tc = tanh_c.data_ptr<float>() + off * hid;
+  TORCH_CHECK(xproj_t.is_contiguous() && h_init.is_contiguous() && c_init.is_contiguous() && w_hh.is_contiguous(),
+              "PackedLstmRun::step needs contiguous tensors");
   const float* m = mask.defined() && mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
-  float* ho = h_out.data_ptr<float>() + off * hid;
-  float* co = c_out.data_ptr<float>() + off * hid;
-  for (std::int64_t r = 0; r < n; ++r) {
-    const float scale = m ? m[off + r] : 1.0f;
-    const float* gr = gp + r * 4 * hid;
-    for (std::int64_t j = 0; j < hid; ++j) {
-      ho[r * hid + j] = scale * gr[2 * hid + j] * tc[r * hid + j];
-      co[r * hid + j] = scale * cr[r * hid + j];
-    }
-  }
+  step(packing, t, xproj_t.data_ptr<float>(), h_init.data_ptr<float>(), c_init.data_ptr<float>(),
+       w_hh.data_ptr<float>(), m);
+}
+
+// Raw-pointer step: no torch op at all (the tensor version above costs only pointer look-ups), because ~10
+// dispatched ops per step used to cost more than the step's arithmetic.
+void PackedLstmRun::step(const Packing& packing, std::size_t t, const float* xproj_t, const float* h_init,
+                         const float* c_init, const float* w_hh, const float* mask) {
+  const std::int64_t n = packing.active[t], off = packing.offset[t], hid = h_out.size(1);
+  if (n == 0) return;
+  const std::int64_t prev = t == 0 ? 0 : packing.offset[t - 1] * hid;
+  const float* h_prev = t == 0 ? h_init : h_out.data_ptr<float>() + prev;
+  const float* c_prev = t == 0 ? c_init : c_out.data_ptr<float>() + prev;
+  float* g = gates.data_ptr<float>() + off * 4 * hid;
+  std::memcpy(g, xproj_t, sizeof(float) * static_cast<std::size_t>(n * 4 * hid));
+  const LstmStepRows rows{g, c_raw.data_ptr<float>() + off * hid, tanh_c.data_ptr<float>() + off * hid,
+                          h_out.data_ptr<float>() + off * hid, c_out.data_ptr<float>() + off * hid};
+  lstm_step_rows(h_prev, c_prev, w_hh, mask != nullptr ? mask + off : nullptr, n, hid, rows);
 }
 
 namespace {
@@ -84,8 +79,12 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
       run = *replay;  // the caller already ran these steps (same inputs); only the graph node is new
     } else {
       run = PackedLstmRun(local, w_hh.size(1), xproj.options());
+      const float* m = mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
+      const float* x = xproj.data_ptr<float>();
+      const std::int64_t width = xproj.size(1);
       for (std::size_t t = 0; t < local.active.size(); ++t)
-        run.step(local, t, xproj.narrow(0, local.offset[t], local.active[t]), h_init, c_init, w_hh, mask);
+        run.step(local, t, x + local.offset[t] * width, h_init.data_ptr<float>(), c_init.data_ptr<float>(),
+                 w_hh.data_ptr<float>(), m);
     }
     const Tensor gates = run.gates, c_raw = run.c_raw, tanh_c = run.tanh_c, h_out = run.h_out, c_out = run.c_out;
     ctx->save_for_backward({w_hh, h_init, c_init, mask});
@@ -164,9 +163,9 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
         }
         if (dm) dm[off + r] = dm_acc;
       }
-      // Gradient w.r.t. h_{t-1} for the rows that ran at step t (the others ended earlier and stay zero).
-      Tensor dh_rows = dh.narrow(0, 0, n);
-      torch::mm_out(dh_rows, d_gates.narrow(0, off, n), w_hh);
+      // Gradient w.r.t. h_{t-1} for the rows that ran at step t (the others ended earlier and stay zero):
+      // dh[n, H] = dG[n, 4H] W_hh[4H, H], i.e. column-major dh^T = W_hh^T-as-stored x dG^T (torch's mm call).
+      blas_sgemm('N', 'N', hid, n, 4 * hid, 1.0f, w_hh.data_ptr<float>(), hid, dg, 4 * hid, 0.0f, dhp, hid);
     }
 
     // dW_hh = sum_t dG_t^T h_{t-1}: one product over the packed sequence instead of one per step.
@@ -174,8 +173,8 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
     for (std::size_t t = 0; t < packing->active.size(); ++t) {
       const std::int64_t n = packing->active[t];
       if (n == 0) break;
-      h_prev.narrow(0, packing->offset[t], n)
-          .copy_(t == 0 ? h_init.narrow(0, 0, n) : h_out.narrow(0, packing->offset[t - 1], n));
+      const float* src = t == 0 ? h_init.data_ptr<float>() : h_out.data_ptr<float>() + packing->offset[t - 1] * hid;
+      std::memcpy(h_prev.data_ptr<float>() + packing->offset[t] * hid, src, sizeof(float) * static_cast<std::size_t>(n * hid));
     }
     Tensor d_w_hh = d_gates.t().mm(h_prev);
     return {d_gates, dh, dc, d_w_hh, d_mask, Tensor(), Tensor(), Tensor()};
@@ -190,7 +189,7 @@ torch::Tensor packed_lstm(const torch::Tensor& xproj, const torch::Tensor& h0, c
   // Custom autograd functions reject undefined inputs: "no initial state" becomes zeros and "no mask" an
   // empty tensor.
   const torch::Tensor zeros = torch::zeros({packing.rows, w_hh.size(1)}, xproj.options());
-  return PackedLstmFunction::apply(xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh,
+  return PackedLstmFunction::apply(xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh.contiguous(),
                                    mask.defined() ? mask.contiguous() : torch::empty({0}, xproj.options()),
                                    packing.active, packing.rows, replay);
 }

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "teaching/skills/compile_torch.hpp"
+#include "teaching/skills/synthetic_sequences.hpp"
 
 namespace sc::compile_detail {
 namespace {
@@ -47,6 +48,39 @@ TEST(PackedLstm, ForwardAndGradientsMatchPlainAutograd) {
   const char* names[] = {"output", "d xproj", "d h0", "d c0", "d w_hh", "d mask"};
   for (std::size_t k = 0; k < fast.size(); ++k)
     EXPECT_TRUE(torch::allclose(fast[k], reference[k], 1e-4, 1e-5)) << names[k] << "\n" << fast[k] << "\n" << reference[k];
+}
+
+
+// hard_readout (each pass from its hard start, raw-row steps) must give exactly the boundaries and skills of
+// the training-time encoder in eval mode, on untrained networks whose boundaries fall anywhere (also before
+// an earlier boundary), in the writing (action) and parking (statediff+action) modes.
+void expect_same_readout(CompileConfig config, const std::vector<PlantedSequence>& planted, std::uint64_t seed,
+                         double weight_scale) {
+  std::vector<StepSequence> raw;
+  for (const auto& p : planted) raw.push_back(p.steps);
+  if (config.uses_states()) config.state_dim = raw.front().state_dim;
+  auto gen = at::detail::createCPUGenerator(seed);
+  CompileNetwork net(config, gen);
+  {
+    torch::NoGradGuard no_grad;
+    for (auto& [name, t] : net.named()) t->mul_(weight_scale);  // larger weights: more varied boundaries
+  }
+  const auto inputs = to_model_inputs(raw, config, "trajectory");
+  std::vector<const StepSequence*> steps;
+  for (const auto& m : inputs) steps.push_back(&m.steps);
+  const Batch batch = make_batch(steps, config);
+  torch::NoGradGuard no_grad;
+  const HardReadout fast = hard_readout(net, batch), reference = hard_readout_reference(net, batch);
+  EXPECT_EQ(fast.boundaries, reference.boundaries) << "seed " << seed << " scale " << weight_scale;
+  EXPECT_EQ(fast.skills, reference.skills) << "seed " << seed << " scale " << weight_scale;
+}
+
+TEST(CompileInference, FastReadoutMatchesTheTrainingEncoderExactly) {
+  for (std::uint64_t seed : {1u, 2u, 3u})
+    for (double scale : {1.0, 3.0}) {
+      expect_same_readout(CompileConfig::writing_defaults(), writing_like_sequences(5, 8, seed), seed, scale);
+      expect_same_readout(CompileConfig::parking_defaults(), parking_like_sequences(20, 11, 29, seed), seed, scale);
+    }
 }
 
 }  // namespace
