@@ -38,7 +38,7 @@ int fall_back_to_demo(const std::string& reason) {
 int run_window(SdlWindowContext& window, const GuiOptions& options, InputSource& source) {
   AppServices services;
   services.options = options;
-  ScreenHost host(window, services, "start");
+  ScreenHost host(window, services, "start", source.max_steps_per_frame());
   host.imgui().make_current();
   if (!ImGui_ImplSDL2_InitForOpenGL(window.window(), window.sdl_gl_context()))
     throw InputError("SDL window", "ImGui SDL2 backend failed to start");

@@ -186,7 +186,7 @@ InputScript read_input_script(const std::filesystem::path& file) {
   InputScript script;
   script.file = file;
   if (const auto steps = root.find("steps_per_frame"))
-    script.steps_per_frame = int_in(*steps, 1, ScreenHost::kMaxStepsPerFrame);
+    script.steps_per_frame = int_in(*steps, 1, kMaxScriptStepsPerFrame);
   if (const auto window = root.find("window")) {
     if (!window->is_array() || window->size() != 2) window->fail("expected [width, height] in points");
     script.width = int_in(window->at(std::size_t{0}), 320, 8192);

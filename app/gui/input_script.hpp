@@ -54,9 +54,13 @@ struct ScriptStep {
   std::vector<Vec2f> points;
 };
 
+// Half a second of simulation per drawn frame: whole sessions run in few frames (each costs a render)
+// while a countdown or a demo still spans several.
+inline constexpr int kMaxScriptStepsPerFrame = 30;
+
 struct InputScript {
   std::filesystem::path file;
-  int steps_per_frame = 1;  // fixed simulation steps (1/60 s each) per drawn frame
+  int steps_per_frame = 1;  // fixed simulation steps (1/60 s each) per drawn frame, 1..kMaxScriptStepsPerFrame
   int width = 1280;         // window size in points
   int height = 720;
   std::vector<ScriptStep> steps;  // repeats expanded

@@ -4,7 +4,11 @@
 
 #include <cfloat>
 
+#include "app/gui/screen_host.hpp"
+
 namespace sc {
+
+int InputSource::max_steps_per_frame() const { return ScreenHost::kMaxStepsPerFrame; }
 
 void LiveInputSource::pump(const std::function<void(const SDL_Event&)>& deliver) {
   SDL_Event event;
@@ -14,9 +18,11 @@ void LiveInputSource::pump(const std::function<void(const SDL_Event&)>& deliver)
   }
 }
 
+// The first frame advances nothing: the time before it went into start-up (fonts, the GL context).
 double LiveInputSource::frame_seconds() {
   const Uint64 now = SDL_GetPerformanceCounter();
-  const double elapsed = static_cast<double>(now - previous_) / static_cast<double>(SDL_GetPerformanceFrequency());
+  const double elapsed =
+      previous_ == 0 ? 0.0 : static_cast<double>(now - previous_) / static_cast<double>(SDL_GetPerformanceFrequency());
   previous_ = now;
   return elapsed;
 }

@@ -25,8 +25,9 @@ class InputSource {
   virtual ~InputSource() = default;
   // Collects this frame's events and hands each SDL event the window must see (ImGui, quit) to `deliver`.
   virtual void pump(const std::function<void(const SDL_Event&)>& deliver) = 0;
-  // Seconds the simulation advances this frame.
+  // Seconds the simulation advances this frame, and the most simulation steps one frame may run.
   virtual double frame_seconds() = 0;
+  virtual int max_steps_per_frame() const;
   // Called after ImGui_ImplSDL2_NewFrame: ImGui's mouse in framebuffer pixels (the backend polls SDL).
   virtual void feed_imgui_mouse(float pixel_density) = 0;
   // The frame's device snapshot for the screens; clears the edges.
@@ -46,7 +47,7 @@ class LiveInputSource final : public InputSource {
 
  private:
   SdlInput input_;
-  Uint64 previous_ = SDL_GetPerformanceCounter();
+  Uint64 previous_ = 0;  // performance counter at the previous frame; 0 before the first
 };
 
 }  // namespace sc

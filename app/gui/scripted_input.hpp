@@ -27,6 +27,7 @@ class ScriptedInput final : public InputSource {
 
   void pump(const std::function<void(const SDL_Event&)>& deliver) override;
   double frame_seconds() override { return script_.frame_seconds(); }
+  int max_steps_per_frame() const override { return script_.steps_per_frame; }
   void feed_imgui_mouse(float pixel_density) override;
   FrameInput poll(SDL_Window* window, float pixel_density) override;
   void after_frame(const DrawnFrame& frame) override;
