@@ -7,7 +7,8 @@
 //              {"drag": [[300, 300], [500, 320]], "frames": 30}, {"repeat": 3, "steps": [...]},
 //              {"screenshot": "summary.png"}, {"expect_screen": "learn_summary"}]}
 // Each step holds one action; steps run in order, several in the same frame until a step that waits
-// (wait_frames, wait_seconds, until_screen, drag, and the frame after a key or click that releases it).
+// (wait_frames, wait_seconds, until_screen, drag, screenshot, and the frame after a key or click that
+// releases it).
 // Positions are framebuffer pixels, top-left origin. Bad scripts throw InputError naming the file and the
 // JSON path of the step.
 #include <SDL.h>

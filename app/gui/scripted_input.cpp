@@ -14,7 +14,7 @@ namespace sc {
 namespace {
 
 constexpr int kMotionEventsPerFrame = 8;  // a drag's mouse samples per frame: a pen needs more than one
-constexpr int kScriptedGamepadId = 1000;  // above any real instance id of a short test run
+constexpr int kFirstGamepadId = 1000;  // above any real instance id of a short test run
 
 float distance(Vec2f a, Vec2f b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
@@ -108,7 +108,10 @@ void ScriptedInput::run(const ScriptStep& step, const Deliver& deliver) {
     case ScriptAction::gamepad_disconnect:
     case ScriptAction::gamepad_axis:
     case ScriptAction::gamepad_button: gamepad(step); break;
-    case ScriptAction::screenshot: screenshot_ = step.name; break;
+    case ScriptAction::screenshot:  // of this frame, before later steps change what it shows
+      screenshot_ = step.name;
+      resume_frame_ = frame_ + 1;
+      break;
   }
 }
 
@@ -181,7 +184,7 @@ void ScriptedInput::gamepad(const ScriptStep& step) {
   if (step.action == ScriptAction::gamepad_connect) {
     state_.gamepads.clear();
     GamepadSnapshot pad;
-    pad.instance_id = kScriptedGamepadId;
+    pad.instance_id = kFirstGamepadId + gamepads_connected_++;  // SDL gives a re-plugged pad a new id too
     pad.name = step.name;
     state_.gamepads.push_back(pad);
     return;

@@ -65,6 +65,7 @@ class ScriptedInput final : public InputSource {
   std::string screen_;             // the screen shown after the last drawn frame
   std::string screenshot_;         // PNG to write after this frame, if any
   FrameInput state_;               // held state, plus this frame's edges and events
+  int gamepads_connected_ = 0;
   bool finished_ = false;
 };
 
