@@ -103,7 +103,7 @@ void ScriptedInput::run(const ScriptStep& step, const Deliver& deliver) {
       button(0, true, deliver);
       drag_ = Drag{step.points, frame_, step.frames};
       break;
-    case ScriptAction::wheel: state_.wheel += step.value; break;
+    case ScriptAction::wheel: wheel(step.value, deliver); break;
     case ScriptAction::gamepad_connect:
     case ScriptAction::gamepad_disconnect:
     case ScriptAction::gamepad_axis:
@@ -160,6 +160,15 @@ void ScriptedInput::button(int index, bool down, const Deliver& deliver) {
   e.button.state = down ? SDL_PRESSED : SDL_RELEASED;
   e.button.x = static_cast<int>(state_.mouse_pixels.x);
   e.button.y = static_cast<int>(state_.mouse_pixels.y);
+  deliver(e);
+}
+
+void ScriptedInput::wheel(float notches, const Deliver& deliver) {
+  state_.wheel += notches;
+  SDL_Event e{};
+  e.type = SDL_MOUSEWHEEL;
+  e.wheel.y = static_cast<Sint32>(std::lround(notches));  // ImGui 1.86's backend scrolls by the sign
+  e.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
   deliver(e);
 }
 

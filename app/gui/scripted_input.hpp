@@ -48,6 +48,7 @@ class ScriptedInput final : public InputSource {
   void continue_drag(const Deliver& deliver);
   void key(SDL_Scancode key, bool down, const Deliver& deliver);
   void button(int index, bool down, const Deliver& deliver);
+  void wheel(float notches, const Deliver& deliver);
   void move_to(Vec2f pixels, double time_seconds);
   void type(const std::string& text, const Deliver& deliver);
   void gamepad(const ScriptStep& step);
