@@ -18,6 +18,10 @@ int main(int argc, char** argv) {
              "  skillcoach <command> --help      options and an example for one command");
   sc::GuiOptions gui;
   app.add_option("--data-dir", gui.data_dir, "Where learner records are kept (default: XDG data directory)");
+  app.add_option("--script", gui.script,
+                 "Play an input script (JSON) instead of reading devices, offscreen without a display "
+                 "(end-to-end tests; docs/input-script.md)")
+      ->group("Testing");
 
   sc::cli::CommandRunner runner;
   for (auto& spec : sc::cli::registered_commands()) {

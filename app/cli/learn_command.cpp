@@ -1,8 +1,8 @@
 // skillcoach learn: a whole training session played headless by the scripted learner
 // (app/gui/screens/learn_scripted_learner.hpp) through the same TrainingSession orchestrator the trainer's
 // screens drive, storing every trial in the learner database as it ends. Resumes the learner's unfinished
-// session of the task when there is one. Used by the end-to-end and SIGKILL tests, and handy to fill a
-// database for the instructor review.
+// session of the task when there is one. Used by the session and SIGKILL tests (the end-to-end tests through
+// the screens run `skillcoach --script`), and handy to fill a database for the instructor review.
 #include <CLI/CLI.hpp>
 
 #include <chrono>

@@ -2,12 +2,13 @@
 
 namespace sc {
 
-ScreenHost::ScreenHost(GlContext& context, AppServices& services, const std::string& first_screen)
+ScreenHost::ScreenHost(GlContext& context, AppServices& services, const std::string& first_screen,
+                       int max_steps_per_frame)
     : context_(context),
       services_(services),
       imgui_(context),
       renderer_(context),
-      clock_(kSimulationStep, kMaxStepsPerFrame),
+      clock_(kSimulationStep, max_steps_per_frame),
       navigator_(services, first_screen) {}
 
 void ScreenHost::frame(const FrameInput& input, double elapsed_seconds) {

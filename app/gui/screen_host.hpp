@@ -17,7 +17,10 @@ class ScreenHost {
   static constexpr double kSimulationStep = 1.0 / 60.0;
   static constexpr int kMaxStepsPerFrame = 8;  // beyond this a long frame is dropped (no spiral of death)
 
-  ScreenHost(GlContext& context, AppServices& services, const std::string& first_screen);
+  // `max_steps_per_frame` bounds the steps of one frame: kMaxStepsPerFrame for wall-clock frames, more for
+  // input scripts, whose frames are a fixed, known amount of simulation time (nothing to drop).
+  ScreenHost(GlContext& context, AppServices& services, const std::string& first_screen,
+             int max_steps_per_frame = kMaxStepsPerFrame);
 
   // Make the ImGui context current and feed platform input to ImGui (io.MousePos, ...) before calling frame().
   ImGuiLayer& imgui() { return imgui_; }

@@ -1,5 +1,5 @@
 #pragma once
-// A scripted learner for headless runs (`skillcoach learn`, the end-to-end and crash tests, the golden
+// A scripted learner for headless runs (`skillcoach learn`: the session and crash tests; the golden
 // screenshots of the trainer): it imitates a reference trial (the expert's, or a drill's) with a
 // deterministic, skill-dependent error, so sessions have realistic, reproducible data without a person.
 //   parking: the expert's actions with the steering scaled by `skill` and the throttle jittered by a seeded

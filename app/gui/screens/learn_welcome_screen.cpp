@@ -66,7 +66,12 @@ class LearnWelcomeScreen final : public Screen {
   void draw_name(UiContext& ui) {
     learn_ui::heading(ui, "Your name");
     ImGui::SetNextItemWidth(-1);
-    if (ImGui::InputText("##name", name_.data(), name_.size())) flow_.learner = name_.data();
+    // The field has the keyboard from the start (no click before typing), and Enter in it continues.
+    if (!name_focused_) ImGui::SetKeyboardFocusHere();
+    name_focused_ = true;
+    const bool entered = ImGui::InputText("##name", name_.data(), name_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    if (ImGui::IsItemEdited() || entered) flow_.learner = name_.data();
+    confirm_ = confirm_ || entered;
   }
 
   void draw_learners(UiContext& ui) {
@@ -137,6 +142,7 @@ class LearnWelcomeScreen final : public Screen {
   LearnFlow& flow_;
   std::array<char, 64> name_{};
   bool confirm_ = false;
+  bool name_focused_ = false;
 };
 
 const ScreenRegistration kReg{{"learn_welcome", "Trainer: welcome, learner name, resume",
