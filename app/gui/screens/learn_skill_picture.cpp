@@ -93,6 +93,27 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
 }
 
+namespace {
+
+// Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel,
+// which shrinks to a fraction of a pixel in a thumbnail; a thick polyline through such zigzags draws a
+// miter spike at every one of them (the expert's word looked hairy).
+std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
+  std::vector<ImVec2> out;
+  for (const ImVec2& p : points) {
+    if (!out.empty()) {
+      const float dx = p.x - out.back().x, dy = p.y - out.back().y;
+      if (dx * dx + dy * dy < spacing * spacing) continue;
+    }
+    out.push_back(p);
+  }
+  if (!points.empty() && (out.size() < 2 || out.back().x != points.back().x || out.back().y != points.back().y))
+    out.push_back(points.back());
+  return out;
+}
+
+}  // namespace
+
 void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {
   d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
   const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
@@ -100,8 +121,8 @@ void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& lear
   BoxMap box{o, size};
   box.include(learner);
   box.include(expert);
-  const std::vector<ImVec2> e = box.map(expert), l = box.map(learner);
-  d.AddPolyline(e.data(), static_cast<int>(e.size()), IM_COL32(91, 155, 255, 80), ImDrawFlags_None, 9.0f);
+  const std::vector<ImVec2> e = thinned(box.map(expert), 5.0f), l = thinned(box.map(learner), 1.5f);
+  d.AddPolyline(e.data(), static_cast<int>(e.size()), IM_COL32(91, 155, 255, 80), ImDrawFlags_None, 7.0f);
   d.AddPolyline(l.data(), static_cast<int>(l.size()), IM_COL32(255, 226, 138, 235), ImDrawFlags_None, 2.5f);
   d.AddCircleFilled(l.back(), 4.0f, IM_COL32(255, 226, 138, 235));
 }

@@ -3,6 +3,8 @@
 // "another adaptive round" (Adaptive) or "finish".
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -46,7 +48,16 @@ class LearnSummaryScreen final : public Screen {
     draw_before_after(ui, *s);
     ImGui::Dummy(ImVec2(0, 6 * sc));
     learn_ui::heading(ui, "Skills (mistake weight before -> after; 0 = none)");
-    if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp)) {
+    // The table scrolls when the window is too short for every row (the parking model has 16 skills), so
+    // the two buttons below always show.
+    int rows = 0;
+    for (const SkillChange& c : summary_->skills) rows += c.seen ? 1 : 0;
+    const float row = ImGui::GetTextLineHeight() + ImGui::GetStyle().CellPadding.y * 2;  // a table row's pitch
+    const float rows_height = rows * row;
+    // Whole rows only, so the last visible one is not cut.
+    const float room = row * std::max(3.0f, std::floor((static_cast<float>(ui.height) - ImGui::GetCursorPosY() - 160 * sc) / row));
+    const ImGuiTableFlags scroll = rows_height > room ? ImGuiTableFlags_ScrollY : 0;
+    if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp | scroll, ImVec2(0, scroll ? room : 0))) {
       for (const SkillChange& c : summary_->skills) {
         if (!c.seen) continue;
         ImGui::TableNextRow();
