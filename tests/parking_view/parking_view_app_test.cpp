@@ -25,13 +25,15 @@ std::string quoted(const std::filesystem::path& p) {
   return text;
 }
 
-std::filesystem::path learner_trial_file() {
+// Each test writes its own copy: ctest runs the tests of this file in parallel processes, and two atomic
+// writes of one file raced (one process renamed the other's temporary file away: "cannot be replaced").
+std::filesystem::path learner_trial_file(const std::string& name) {
   ParkingTrial trial;
   trial.scenario.heading0 = 3.51;
   trial.scenario.goal_spot = 7;
   trial.actions.assign(12, ParkingAction{0.6, -0.5});
   trial.source = "learner";
-  const auto file = test::test_output_dir() / "render_learner_trial.json";
+  const auto file = test::test_output_dir() / name;
   write_parking_trial(file, trial);
   return file;
 }
@@ -49,7 +51,7 @@ int count_colour(const RgbaImage& image, int r, int g, int b) {
 
 TEST(RenderCommand, DrawsTheTrialWithTheReferenceLook) {
   const auto out = test::test_output_dir() / "render_plain.png";
-  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(learner_trial_file()) + " --out " +
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(learner_trial_file("render_plain_trial.json")) + " --out " +
                           quoted(out) + " --size 800x450");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const RgbaImage image = read_png(out);
@@ -63,7 +65,7 @@ TEST(RenderCommand, DrawsTheTrialWithTheReferenceLook) {
 TEST(RenderCommand, ExpertOverlayAddsTheGhostRibbon) {
   const auto plain = test::test_output_dir() / "render_plain_for_overlay.png";
   const auto overlay = test::test_output_dir() / "render_overlay.png";
-  const std::string trial = quoted(learner_trial_file());
+  const std::string trial = quoted(learner_trial_file("render_overlay_trial.json"));
   ASSERT_EQ(test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(plain)).exit_code, 0);
   const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(overlay) +
                           " --overlay expert");
