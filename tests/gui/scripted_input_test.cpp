@@ -18,6 +18,7 @@
 #include "teaching/records/learner_store.hpp"
 #include "tests/support/golden_image.hpp"
 #include "tests/support/run_skillcoach.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
@@ -25,13 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using records::TrialKind;
 
-fs::path fresh_dir(const std::string& name) {
-  const char* out = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  fs::path dir = fs::path(out ? out : "/tmp") / ("gui_script_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_scratch_dir("gui_script_" + name); }
 
 fs::path script_file(const std::string& name) {
   const char* data = std::getenv("SKILLCOACH_TEST_DATA");

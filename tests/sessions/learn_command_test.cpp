@@ -16,6 +16,7 @@
 
 #include "teaching/records/learner_store.hpp"
 #include "tests/support/run_skillcoach.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
@@ -23,13 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using records::TrialKind;
 
-fs::path fresh_dir(const std::string& name) {
-  const char* out = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  fs::path dir = fs::path(out ? out : "/tmp") / ("learn_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_scratch_dir("learn_" + name); }
 
 long count_kind(const std::vector<records::StoredTrial>& trials, TrialKind kind) {
   return std::count_if(trials.begin(), trials.end(), [kind](const auto& t) { return t.record.kind == kind; });

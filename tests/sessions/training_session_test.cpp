@@ -7,6 +7,7 @@
 
 #include "engine/core/error.hpp"
 #include "tests/sessions/toy_task_kit.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
@@ -14,13 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 using records::TrialKind;
 
-fs::path fresh_dir(const std::string& name) {
-  const char* out = std::getenv("SKILLCOACH_TEST_OUTPUT");
-  fs::path dir = fs::path(out ? out : fs::temp_directory_path().string()) / ("sessions_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return test::fresh_scratch_dir("sessions_" + name); }
 
 TimestampSource fixed_clock() {
   return [] { return std::string("2024-05-01T12:00:00.000Z"); };

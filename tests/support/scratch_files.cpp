@@ -13,6 +13,14 @@ std::filesystem::path scratch_path(std::string_view group, std::string_view name
   return base / name;
 }
 
+std::filesystem::path fresh_scratch_dir(std::string_view name) {
+  const char* dir = std::getenv("SKILLCOACH_TEST_OUTPUT");
+  const auto path = std::filesystem::path(dir != nullptr ? dir : "/tmp") / name;
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
 std::string read_bytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

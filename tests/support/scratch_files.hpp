@@ -9,6 +9,8 @@ namespace sc::test {
 
 // <output>/<group>/<name>, creating <output>/<group>.
 std::filesystem::path scratch_path(std::string_view group, std::string_view name);
+// <output>/<name>, emptied: removed with everything in it and created again.
+std::filesystem::path fresh_scratch_dir(std::string_view name);
 std::string read_bytes(const std::filesystem::path& file);
 void write_bytes(const std::filesystem::path& file, std::string_view bytes);
 
