@@ -112,23 +112,20 @@ void expect_summary_screenshot(const fs::path& png, const std::string& golden) {
   EXPECT_TRUE(test::matches_golden(read_png(png), golden));
 }
 
-TEST(ScriptedGui, ParkingSessionThroughEveryScreen) {
-  const fs::path dir = fresh_dir("parking");
-  const test::CommandResult run = run_script(script_file("parking_session.json"), dir);
+// A whole session of `task` played by tests/gui/data/<task>_session.json: every screen in order, the summary
+// golden, and the database.
+void expect_scripted_session(const std::string& task, const std::string& learner, const std::string& device) {
+  const fs::path dir = fresh_dir(task);
+  const test::CommandResult run = run_script(script_file(task + "_session.json"), dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   expect_whole_flow(run);
-  expect_summary_screenshot(dir / "parking_summary.png", "gui/parking_session_summary");
-  expect_whole_session(dir, "Grace", "parking", "keyboard");
+  expect_summary_screenshot(dir / (task + "_summary.png"), "gui/" + task + "_session_summary");
+  expect_whole_session(dir, learner, task, device);
 }
 
-TEST(ScriptedGui, WritingSessionThroughEveryScreen) {
-  const fs::path dir = fresh_dir("writing");
-  const test::CommandResult run = run_script(script_file("writing_session.json"), dir);
-  ASSERT_EQ(run.exit_code, 0) << run.output;
-  expect_whole_flow(run);
-  expect_summary_screenshot(dir / "writing_summary.png", "gui/writing_session_summary");
-  expect_whole_session(dir, "Ketut", "writing", "mouse");
-}
+TEST(ScriptedGui, ParkingSessionThroughEveryScreen) { expect_scripted_session("parking", "Grace", "keyboard"); }
+
+TEST(ScriptedGui, WritingSessionThroughEveryScreen) { expect_scripted_session("writing", "Ketut", "mouse"); }
 
 // The first pre-test trial of a run that then closes the window: kept with `device` and the learner's
 // throttle in it, the session left unfinished.
