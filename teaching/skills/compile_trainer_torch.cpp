@@ -67,6 +67,30 @@ struct RunResult {
   TrainingSummary summary;
 };
 
+// One pass over the training split in its current order: an Adam step per batch; the loss terms are added
+// to `p` as means over the pass's trajectories.
+void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator,
+                    const std::vector<ModelSteps>& train_steps, const std::vector<std::size_t>& order,
+                    TrainingProgress& p) {
+  const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
+  for (std::size_t first = 0; first < order.size(); first += batch_size) {
+    std::vector<const StepSequence*> chunk;
+    for (std::size_t i = first; i < std::min(order.size(), first + batch_size); ++i)
+      chunk.push_back(&train_steps[order[i]].steps);
+    const Batch batch = compile_detail::make_batch(chunk, net.config);
+    const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
+    optimizer.zero_grad();
+    losses.total.backward();
+    optimizer.step();
+    const double w = static_cast<double>(batch.size) / static_cast<double>(order.size());
+    p.loss += losses.total.item<double>() * w;
+    p.nll_action += losses.nll_action.item<double>() * w;
+    p.nll_state += losses.nll_state.item<double>() * w;
+    p.kl_z += losses.kl_z.item<double>() * w;
+    p.kl_b += losses.kl_b.item<double>() * w;
+  }
+}
+
 RunResult train_run(const CompileConfig& config, int restart, const std::vector<ModelSteps>& train_steps,
                     std::vector<std::size_t> usable, const std::vector<Batch>& valid_batches,
                     const std::function<void(TrainingProgress&)>& report) {
@@ -88,22 +112,7 @@ RunResult train_run(const CompileConfig& config, int restart, const std::vector<
     p.restart = restart;
     p.iteration = it;
     p.iterations = config.iterations;
-    for (std::size_t first = 0; first < usable.size(); first += static_cast<std::size_t>(config.batch_size)) {
-      std::vector<const StepSequence*> chunk;
-      for (std::size_t i = first; i < std::min(usable.size(), first + static_cast<std::size_t>(config.batch_size)); ++i)
-        chunk.push_back(&train_steps[usable[i]].steps);
-      const Batch batch = compile_detail::make_batch(chunk, config);
-      const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
-      optimizer.zero_grad();
-      losses.total.backward();
-      optimizer.step();
-      const double w = static_cast<double>(batch.size) / static_cast<double>(usable.size());
-      p.loss += losses.total.item<double>() * w;
-      p.nll_action += losses.nll_action.item<double>() * w;
-      p.nll_state += losses.nll_state.item<double>() * w;
-      p.kl_z += losses.kl_z.item<double>() * w;
-      p.kl_b += losses.kl_b.item<double>() * w;
-    }
+    train_one_pass(net, optimizer, generator, train_steps, usable, p);
     if (!std::isfinite(p.loss))
       throw InputError("compile training", "loss became non-finite at iteration " + std::to_string(it) +
                                                " (learning rate too high or data not normalised?)");
