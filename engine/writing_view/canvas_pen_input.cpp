@@ -26,30 +26,40 @@ double CanvasPenInput::monotonic(double time) {
 }
 
 void CanvasPenInput::feed(const PointerSample& sample, const Camera2D& camera, bool may_press) {
-  if (ended()) return;
+  if (ended() || paused()) return;
   const bool starts_stroke = sample.pressed && !drawing();
   if (starts_stroke && (!may_press || !on_canvas(camera, sample.pixels))) return;
   if (!recorder_) {
     if (!sample.pressed) return;  // hovering before the first stroke is not recorded
-    recorder_.emplace(monotonic(sample.time), rules_);
+    recorder_.emplace(monotonic(clock(sample.time)), rules_);
   }
   PointerSample s = sample;
-  s.time = monotonic(sample.time);
+  s.time = monotonic(clock(sample.time));
   recorder_->add(pen_sample_at(camera, s));
 }
 
 void CanvasPenInput::done(double time) {
-  const double t = monotonic(time);
+  const double t = monotonic(clock(time));
   if (!recorder_) recorder_.emplace(t, rules_);
   recorder_->done(t);
 }
 
 void CanvasPenInput::tick(double time) {
-  if (recorder_) recorder_->tick(monotonic(time));
+  if (recorder_ && !paused()) recorder_->tick(monotonic(clock(time)));
+}
+
+void CanvasPenInput::pause(double time) {
+  if (!paused()) paused_at_ = time;
+}
+
+void CanvasPenInput::resume(double time) {
+  if (!paused()) return;
+  paused_total_ += std::max(0.0, time - *paused_at_);
+  paused_at_.reset();
 }
 
 double CanvasPenInput::seconds_left(double time) const {
-  return recorder_ ? recorder_->seconds_left(time) : rules_.time_limit_seconds;
+  return recorder_ ? recorder_->seconds_left(clock(time)) : rules_.time_limit_seconds;
 }
 
 writing::TimedTrace CanvasPenInput::raw() const { return recorder_ ? recorder_->raw() : writing::TimedTrace{}; }

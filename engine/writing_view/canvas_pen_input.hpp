@@ -8,6 +8,9 @@
 //  * The trial's clock (and its time limit) starts at the first pen-down, so reading the word first is free.
 //  * The trial ends as writing::PenRecorder decides: on release for classic single-stroke words, on done()
 //    (the "Done" button or Enter), or at the time limit, which tick() checks every frame.
+//  * pause()/resume() stop the trial's clock (the learner pressed Esc): samples while paused are dropped, the
+//    time limit does not run, and the trace's times leave the paused span out, as if the pen had waited.
+//    A stroke held across the pause goes on (a classic word is not ended by the pause itself).
 //  * Time stamps never go backwards: event time stamps have millisecond resolution and the frame's poll time
 //    comes from another call, so a sample earlier than the previous one is given the previous one's time.
 #include <optional>
@@ -36,6 +39,9 @@ class CanvasPenInput {
   void feed(const PointerSample& sample, const Camera2D& camera, bool may_press = true);
   void done(double time);  // ends the trial now (even before any ink: an empty trial)
   void tick(double time);  // once per frame: the time limit
+  void pause(double time);   // no-op when already paused
+  void resume(double time);  // no-op when not paused
+  bool paused() const { return paused_at_.has_value(); }
 
   bool started() const { return recorder_.has_value(); }
   bool drawing() const { return recorder_ && recorder_->pressed(); }
@@ -50,10 +56,14 @@ class CanvasPenInput {
 
  private:
   double monotonic(double time);
+  // The trial clock: wall time minus every paused span (frozen at the pause while paused).
+  double clock(double time) const { return (paused_at_ ? *paused_at_ : time) - paused_total_; }
 
   writing::PenRecorderRules rules_;
   std::optional<writing::PenRecorder> recorder_;
   std::optional<double> last_time_;
+  std::optional<double> paused_at_;
+  double paused_total_ = 0.0;
 };
 
 }  // namespace sc::writing_view

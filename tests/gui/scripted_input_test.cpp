@@ -15,6 +15,7 @@
 
 #include "engine/core/json_file.hpp"
 #include "engine/render/rgba_image.hpp"
+#include "engine/writing/writing_trial.hpp"
 #include "teaching/records/learner_store.hpp"
 #include "tests/support/golden_image.hpp"
 #include "tests/support/run_skillcoach.hpp"
@@ -158,6 +159,27 @@ TEST(ScriptedGui, MouseDraggedOnScreenStickDrivesATrial) {
   const test::CommandResult run = run_script(script_file("mouse_joystick_trial.json"), dir);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   expect_one_kept_pretest_trial(dir, "mouse-joystick");
+}
+
+// Esc mid-stroke stops the writing trial's clock for longer than its time limit: the pause card shows, ink
+// moved while paused is dropped, and the kept trace's times leave the paused 40 s out.
+TEST(ScriptedGui, EscPausesAWritingTrialWithoutTimingThePause) {
+  const fs::path dir = fresh_dir("writing_pause");
+  const test::CommandResult run = run_script(script_file("writing_pause_trial.json"), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(test::matches_golden(read_png(dir / "writing_paused.png"), "gui/writing_paused"));
+  records::LearnerStore store(dir);
+  const auto learners = store.list_learners();
+  ASSERT_EQ(learners.size(), 1u);
+  const auto trials = store.trials_of_session(learners[0].sessions.at(0).session.id);
+  ASSERT_EQ(trials.size(), 1u);
+  EXPECT_EQ(trials[0].record.kind, TrialKind::Pretest);
+  const writing::WritingTrial trial = writing::parse_writing_trial(parse_json_text(trials[0].record.trajectory_json, "trial"), "trial");
+  ASSERT_FALSE(trial.times.empty());
+  EXPECT_LT(trial.times.back(), 8.0) << "7 frames of 0.4 s of writing; the 40 s pause must not count";
+  EXPECT_GT(trial.times.back(), 1.0);
+  const auto far_right = std::find_if(trial.points.begin(), trial.points.end(), [](const auto& p) { return p.x > 250; });
+  EXPECT_EQ(far_right, trial.points.end()) << "the mouse moved to the right while paused: no ink there";
 }
 
 TEST(ScriptedGui, BadScriptIsOneErrorLineNamingTheFileAndExit2) {

@@ -122,5 +122,45 @@ TEST(CanvasPenInput, DoneBeforeWritingEndsAnEmptyTrialAndTimeNeverGoesBack) {
   EXPECT_GE(times[2], times[1]);
 }
 
+TEST(CanvasPenInput, PauseStopsTheClockDropsSamplesAndLeavesThePausedSpanOutOfTheTrace) {
+  CanvasPenInput pen(classic_rules());
+  const Camera2D cam = camera();
+  pen.feed({10.0, px(10, 150), true}, cam);
+  pen.feed({11.0, px(20, 150), true}, cam);
+  pen.pause(12.0);
+  EXPECT_TRUE(pen.paused());
+  pen.feed({20.0, px(200, 100), true}, cam);  // moved while paused: not ink
+  pen.feed({25.0, px(200, 100), false}, cam);  // released while paused: does not end the classic trial
+  pen.tick(100.0);                              // far past the 20 s limit in wall time
+  EXPECT_FALSE(pen.ended());
+  EXPECT_DOUBLE_EQ(pen.seconds_left(100.0), 18.0);  // frozen at the pause
+  pen.resume(112.0);                                 // paused for 100 s
+  EXPECT_FALSE(pen.paused());
+  EXPECT_DOUBLE_EQ(pen.seconds_left(113.0), 17.0);
+  pen.feed({113.0, px(30, 150), true}, cam);  // the held stroke goes on
+  pen.feed({114.0, px(30, 150), false}, cam);
+  ASSERT_TRUE(pen.ended());
+  EXPECT_EQ(pen.end_reason(), TrialEnd::Released);
+  const writing::TimedTrace trace = pen.raw();
+  ASSERT_EQ(trace.points.size(), 3u);
+  EXPECT_NEAR(trace.points[2].x, 30.0, 1e-3);  // nothing from the paused span
+  EXPECT_DOUBLE_EQ(trace.times[1], 1.0);
+  EXPECT_DOUBLE_EQ(trace.times[2], 3.0);  // 113 s wall time minus the 100 s pause, from the first touch at 10 s
+}
+
+TEST(CanvasPenInput, TimeLimitRunsOnlyWhileNotPaused) {
+  CanvasPenInput pen(multi_stroke_rules());
+  const Camera2D cam = camera();
+  pen.feed({0.0, px(10, 150), true}, cam);
+  pen.pause(5.0);
+  pen.pause(50.0);  // a second pause does not move the start of the first
+  pen.resume(60.0);
+  pen.resume(70.0);  // not paused: nothing
+  pen.tick(74.9);    // 19.9 s of trial time
+  EXPECT_FALSE(pen.ended());
+  pen.tick(75.1);
+  EXPECT_EQ(pen.end_reason(), TrialEnd::TimeLimit);
+}
+
 }  // namespace
 }  // namespace sc::writing_view

@@ -125,12 +125,12 @@ class LearnInstructionsScreen final : public Screen {
     ImGui::PopTextWrapPos();
     ImGui::EndGroup();
     ImGui::Dummy(ImVec2(0, 8 * s));
-    // Writing trials have no pause: their clock starts at the pen's first touch, so reading is never timed.
+    // A writing trial's clock starts at the pen's first touch, so reading is never timed; Esc pauses both tasks.
     learn_ui::muted_wrapped(parking ? "The pre-test comes first: a few trials without help, so SkillCoach can see "
                                       "which skills to practise. Esc pauses at any time."
                                     : "The pre-test comes first: a few trials without help, so SkillCoach can see "
                                       "which skills to practise. Each trial's clock starts when the pen first "
-                                      "touches, so take your time to read the word.");
+                                      "touches, so take your time to read the word. Esc pauses.");
     ImGui::Dummy(ImVec2(0, 6 * s));
     if (learn_ui::primary_button(ui, "Start the pre-test") || confirm_) ui.navigator.go_to("learn_trial");
     confirm_ = false;

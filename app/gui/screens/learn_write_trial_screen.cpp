@@ -1,8 +1,10 @@
 // The trainer's writing trials (see learn_write_trial_screen.hpp). As in the paper's study, the goal word is
 // shown faintly underneath in every phase (the learner traces it); drills add what the paper's parking study
 // had and its writing study did not: a demo where the ghost pen writes the drill first, then practice over
-// the drill's ribbon. The pen clock starts at the first touch, so reading the word is free and nothing needs
-// pausing. Every finished trial goes to the TrainingSession at once, which commits it to the database.
+// the drill's ribbon. The pen clock starts at the first touch, so reading the word is free. Esc pauses a demo
+// or a trace: the ghost pen stops, the pen's clock and time limit stop (CanvasPenInput leaves the paused span
+// out of the trace's times) and ink is ignored until Esc again. Every finished trial goes to the
+// TrainingSession at once, which commits it to the database.
 #include "app/gui/screens/learn_write_trial_screen.hpp"
 
 #include <imgui.h>
@@ -61,11 +63,13 @@ class LearnWriteTrialScreen final : public Screen {
     const PixelViewport canvas_area{pad, header + pad, static_cast<float>(ui.width) - panel - 2 * pad,
                                     static_cast<float>(ui.height) - header - 2 * pad};
     const Camera2D camera = writing_view::writing_canvas_camera(canvas_area);
-    if (stage_ == Stage::demo) advance_demo(ui.time_seconds);
-    if (stage_ == Stage::writing) handle_pen(ui, camera);
+    if (learn_ui::pause_pressed(ui.input) && stage_ != Stage::result) toggle_pause(ui);
+    if (stage_ == Stage::demo && !paused_) advance_demo(ui.time_seconds);
+    if (stage_ == Stage::writing && !paused_) handle_pen(ui, camera);
     draw_canvas(ui, camera);
     draw_header(ui);
     draw_panel(ui, panel, header);
+    if (paused_) draw_pause(ui);
     if (stage_ == Stage::result) draw_result(ui);
   }
 
@@ -94,8 +98,33 @@ class LearnWriteTrialScreen final : public Screen {
     const bool on_release = drill ? single_stroke(reference_.points) : writing::trial_ends_on_release(reference_.scenario.alphabet);
     pen_ = writing_view::CanvasPenInput({on_release, time_limit_});
     stage_started_ = now;
+    paused_ = false;
     stage_ = demo_pending_ ? Stage::demo : Stage::writing;
     score_.reset();
+  }
+
+  // The two clocks stop together: the stage's (ghost pen) and the pen's (event time stamps).
+  void toggle_pause(UiContext& ui) {
+    paused_ = !paused_;
+    if (paused_) {
+      paused_at_ = ui.time_seconds;
+      pen_.pause(ui.input.time_seconds);
+    } else {
+      stage_started_ += ui.time_seconds - paused_at_;
+      pen_.resume(ui.input.time_seconds);
+    }
+  }
+
+  // Seconds into the current stage, frozen while paused.
+  double stage_seconds(const UiContext& ui) const { return (paused_ ? paused_at_ : ui.time_seconds) - stage_started_; }
+
+  void draw_pause(UiContext& ui) {
+    learn_ui::begin_card(ui, "learn_write_pause", 480.0f, 0.3f);
+    learn_ui::title(ui, "Paused");
+    ImGui::TextWrapped(stage_ == Stage::demo ? "The ghost pen waits for you."
+                                             : "The clock is stopped and the pen does not write.");
+    ImGui::TextUnformatted("Press Esc to continue.");
+    learn_ui::end_card();
   }
 
   void advance_demo(double now) {
@@ -171,7 +200,7 @@ class LearnWriteTrialScreen final : public Screen {
     if (is_drill_) scene.ribbon = reference_.points;
     else scene.guide = reference_.points;
     scene.learner = services_.headless ? scripted_ink_ : pen_.raw().points;
-    if (stage_ == Stage::demo) scene.ghost_pen = writing_view::ghost_pen_at(reference_.points, ui.time_seconds - stage_started_);
+    if (stage_ == Stage::demo) scene.ghost_pen = writing_view::ghost_pen_at(reference_.points, stage_seconds(ui));
     if (stage_ == Stage::result && score_) scene.score = *score_;
     scene.caption = reference_.scenario.word;
     ui.renderer.set_camera(camera);
@@ -201,13 +230,13 @@ class LearnWriteTrialScreen final : public Screen {
       if (learn_ui::primary_button(ui, "Skip the demo")) end_demo(ui.time_seconds);
     } else if (stage_ == Stage::writing) {
       const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
-      ImGui::BeginDisabled(!pen_.started());
+      ImGui::BeginDisabled(!pen_.started() || paused_);
       if (ImGui::Button("Done (Enter)", ImVec2(half, 0))) pen_.done(ui.input.time_seconds);
       ImGui::SameLine();
       if (ImGui::Button("Clear", ImVec2(half, 0))) pen_ = writing_view::CanvasPenInput(pen_.rules());
       ImGui::EndDisabled();
       if (pen_.started() && !pen_.ended())
-        ImGui::Text("%.0f s left", std::ceil(pen_.seconds_left(ui.input.time_seconds)));
+        ImGui::Text("%.0f s left%s", std::ceil(pen_.seconds_left(ui.input.time_seconds)), paused_ ? " (paused)" : "");
     }
     ImGui::End();
   }
@@ -262,6 +291,8 @@ class LearnWriteTrialScreen final : public Screen {
   writing::TrialEnd end_reason_ = writing::TrialEnd::NotEnded;
   Stage stage_ = Stage::writing;
   double stage_started_ = 0;
+  bool paused_ = false;
+  double paused_at_ = 0;  // ui.time_seconds when the pause began
   double time_limit_ = 60;
   bool is_drill_ = false;
   bool demo_pending_ = false;
