@@ -5,6 +5,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
 
 namespace sc {
@@ -32,21 +33,10 @@ Json read_json_file(const std::filesystem::path& file) {
 }
 
 void write_json_file(const std::filesystem::path& file, const Json& doc, int indent) {
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(file.string(), "cannot be written");
-    // Strings that did not come from JSON (SQLite text of a damaged database, device names) may hold
-    // invalid UTF-8; the default dump() then throws and the whole document (an export, a spill file of
-    // pending trials) would be lost. Such bytes become U+FFFD instead (found by tests/fuzz).
-    out << doc.dump(indent, ' ', false, Json::error_handler_t::replace) << '\n';
-    out.flush();
-    if (!out) throw InputError(file.string(), "write failed (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) throw InputError(file.string(), "cannot be replaced: " + ec.message());
+  // Strings that did not come from JSON (SQLite text of a damaged database, device names) may hold
+  // invalid UTF-8; the default dump() then throws and the whole document (an export, a spill file of
+  // pending trials) would be lost. Such bytes become U+FFFD instead (found by tests/fuzz).
+  write_file_atomically(file, doc.dump(indent, ' ', false, Json::error_handler_t::replace) + '\n');
 }
 
 JsonView::JsonView(const Json& node, std::string source, std::string path)

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "teaching/records/record_json.hpp"
@@ -47,8 +48,7 @@ std::string errno_text() { return std::strerror(errno); }
 // write_json_file() without fsync is not enough here: the spill exists precisely for the case where the
 // machine may go down before the database is writable again.
 void write_durably(const std::filesystem::path& file, const std::string& text) {
-  auto tmp = file;
-  tmp += ".tmp";
+  const std::filesystem::path tmp = temporary_sibling(file);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(file.string(), "cannot be written: " + errno_text());
   std::size_t done = 0;

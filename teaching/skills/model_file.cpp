@@ -5,6 +5,7 @@
 #include <iterator>
 #include <system_error>
 
+#include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
 
 namespace sc {
@@ -87,18 +88,7 @@ void write_model_file(const std::filesystem::path& file, const ModelFileContents
   }
   put<std::uint64_t>(out, fnv1a(out.data(), out.size()));
 
-  auto tmp = file;
-  tmp += ".tmp";
-  {
-    std::ofstream stream(tmp, std::ios::binary | std::ios::trunc);
-    if (!stream) throw InputError(file.string(), "cannot be written");
-    stream.write(out.data(), static_cast<std::streamsize>(out.size()));
-    stream.flush();
-    if (!stream) throw InputError(file.string(), "write failed (disk full?)");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) throw InputError(file.string(), "cannot be replaced: " + ec.message());
+  write_file_atomically(file, out);
 }
 
 ModelFileContents read_model_file(const std::filesystem::path& file) {

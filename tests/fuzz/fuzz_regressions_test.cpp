@@ -58,7 +58,7 @@ TEST(FuzzRegressions, ExportOfADatabaseWithInvalidUtf8TextSucceeds) {
   const auto out = dir / "export.json";
   EXPECT_NO_THROW(sc::records::export_database(dir, out));
   EXPECT_NE(read_bytes(out).find("\xEF\xBF\xBD"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(dir / "export.json.tmp"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) EXPECT_NE(entry.path().extension(), ".tmp");
 }
 
 TEST(FuzzRegressions, JsonFilesReplaceInvalidUtf8InsteadOfThrowing) {

@@ -31,4 +31,11 @@ void write_bytes(const std::filesystem::path& file, std::string_view bytes) {
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
+int temporary_files_in(const std::filesystem::path& dir) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    count += entry.path().extension() == ".tmp" ? 1 : 0;
+  return count;
+}
+
 }  // namespace sc::test

@@ -1,0 +1,18 @@
+#pragma once
+// Whole-file replacement that never leaves a half-written file under the real name: the bytes go to a
+// temporary sibling first, which is then renamed over the file (atomic on POSIX). The temporary's name is
+// unique to the writing process and thread, so two processes saving the same file at once (two test
+// programs, two app instances) cannot write into each other's temporary; the last rename wins whole.
+#include <filesystem>
+#include <string_view>
+
+namespace sc {
+
+// "<file>.<pid>-<thread hash>.tmp", in the same directory (rename must not cross file systems).
+std::filesystem::path temporary_sibling(const std::filesystem::path& file);
+
+// Writes `bytes` to `file` through temporary_sibling(file). On failure the temporary is removed and an
+// InputError names `file`: "cannot be written", "write failed (disk full?)" or "cannot be replaced: ...".
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes);
+
+}  // namespace sc
