@@ -24,6 +24,7 @@ struct SimulateArgs {
   std::string out_dir = "simulate-students";
   std::string model;
   int pairs = 0;
+  double rehearsal = 0.0;
   bool quick = false;
 };
 
@@ -78,6 +79,7 @@ int run(const SimulateArgs& args) {
   StudentExperimentConfig config = args.quick ? StudentExperimentConfig::quick() : StudentExperimentConfig::paper();
   config.seed = args.seed;
   config.finetune_pairs = args.pairs;
+  config.finetune_rehearsal = args.rehearsal;
   const std::unique_ptr<TaskKit> kit = make_task_kit("parking", args.model);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const StudentExperimentResult result = run_student_experiment(*kit, config, progress_printer());
@@ -100,6 +102,9 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt, else the time heuristic)");
   sub.add_option("--pairs", args->pairs, "Fine-tuning pairs per condition (default 0: one round of Ind. Drills per set)")
       ->check(CLI::NonNegativeNumber);
+  sub.add_option("--rehearsal", args->rehearsal,
+                 "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
+      ->check(CLI::Range(0.0, 100.0));
   sub.add_flag("--quick", args->quick, "Tiny students, few sets: checks the pipeline in seconds, concludes nothing");
   return [args] { return run(*args); };
 }

@@ -61,6 +61,29 @@ int count_reverse_pairs(const BcDataset& data) {
   return count;
 }
 
+namespace {
+
+// The first `count` candidates after a partial Fisher-Yates shuffle with our RNG: a uniform sample without
+// replacement.
+std::vector<int> uniform_sample(std::vector<int> candidates, std::size_t count, std::uint64_t seed) {
+  count = std::min(count, candidates.size());
+  Rng rng(seed);
+  for (std::size_t i = 0; i < count; ++i)
+    std::swap(candidates[i], candidates[i + static_cast<std::size_t>(rng.below(candidates.size() - i))]);
+  candidates.resize(count);
+  return candidates;
+}
+
+// The marked pairs, in their original order.
+BcDataset pairs_where(const BcDataset& data, const std::vector<bool>& keep) {
+  BcDataset out = empty_like(data);
+  for (int i = 0; i < data.size(); ++i)
+    if (keep[static_cast<std::size_t>(i)]) copy_pair(data, i, out);
+  return out;
+}
+
+}  // namespace
+
 BcDataset keep_reverse_fraction(const BcDataset& data, double keep_fraction, std::uint64_t seed) {
   if (!(keep_fraction >= 0.0 && keep_fraction <= 1.0))
     throw InputError("reverse-action filter", "keep fraction must lie in [0, 1], got " + std::to_string(keep_fraction));
@@ -68,16 +91,18 @@ BcDataset keep_reverse_fraction(const BcDataset& data, double keep_fraction, std
   for (int i = 0; i < data.size(); ++i)
     if (is_reverse(data, i)) reverse.push_back(i);
   const auto keep = static_cast<std::size_t>(std::lround(keep_fraction * static_cast<double>(reverse.size())));
-  // Partial Fisher-Yates with our RNG: the first `keep` entries are a uniform sample without replacement.
-  Rng rng(seed);
-  for (std::size_t i = 0; i < keep; ++i)
-    std::swap(reverse[i], reverse[i + static_cast<std::size_t>(rng.below(reverse.size() - i))]);
   std::vector<bool> kept(static_cast<std::size_t>(data.size()), true);
-  for (std::size_t i = keep; i < reverse.size(); ++i) kept[static_cast<std::size_t>(reverse[i])] = false;
-  BcDataset out = empty_like(data);
-  for (int i = 0; i < data.size(); ++i)
-    if (kept[static_cast<std::size_t>(i)]) copy_pair(data, i, out);
-  return out;
+  for (int i : reverse) kept[static_cast<std::size_t>(i)] = false;
+  for (int i : uniform_sample(reverse, keep, seed)) kept[static_cast<std::size_t>(i)] = true;
+  return pairs_where(data, kept);
+}
+
+BcDataset sample_pairs(const BcDataset& data, int count, std::uint64_t seed) {
+  std::vector<int> all(static_cast<std::size_t>(data.size()));
+  for (int i = 0; i < data.size(); ++i) all[static_cast<std::size_t>(i)] = i;
+  std::vector<bool> kept(all.size(), false);
+  for (int i : uniform_sample(all, static_cast<std::size_t>(std::max(count, 0)), seed)) kept[static_cast<std::size_t>(i)] = true;
+  return pairs_where(data, kept);
 }
 
 BcDataset first_pairs(const BcDataset& data, int count) {

@@ -31,4 +31,8 @@ BcDataset keep_reverse_fraction(const BcDataset& data, double keep_fraction, std
 // The first `count` pairs (all of them when there are fewer).
 BcDataset first_pairs(const BcDataset& data, int count);
 
+// `count` pairs drawn uniformly without replacement by sc::Rng(seed) (all of them, in order, when there are
+// fewer); the drawn pairs keep their original order.
+BcDataset sample_pairs(const BcDataset& data, int count, std::uint64_t seed);
+
 }  // namespace sc

@@ -1,6 +1,7 @@
 #include "teaching/students/student_experiment.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -18,7 +19,8 @@ namespace sc {
 namespace {
 
 // Independent, reorder-stable seeds for each use (streams of Rng::fork).
-enum SeedStream : std::uint64_t { kStudentInit = 1, kEvaluationSet = 2, kFinetuneData = 3, kFinetuneTraining = 4 };
+enum SeedStream : std::uint64_t { kStudentInit = 1, kEvaluationSet = 2, kFinetuneData = 3, kFinetuneTraining = 4,
+                             kRehearsal = 5 };
 
 std::uint64_t derived_seed(std::uint64_t seed, SeedStream stream, std::uint64_t a = 0, std::uint64_t b = 0) {
   return Rng(seed).fork(stream).fork(a).fork(b).next_u64();
@@ -81,6 +83,8 @@ void StudentExperimentConfig::validate() const {
   positive(evaluation_sets, "evaluation_sets");
   positive(scenarios_per_set, "scenarios_per_set");
   if (finetune_pairs < 0) throw InputError("synthetic students", "finetune_pairs must be >= 0 (0 = one Ind. Drills round)");
+  if (!(finetune_rehearsal >= 0.0 && finetune_rehearsal <= 100.0))
+    throw InputError("synthetic students", "finetune_rehearsal must lie in [0, 100], got " + std::to_string(finetune_rehearsal));
   for (const SyntheticStudentRecipe& r : students) positive(r.epochs, "student epochs");
 }
 
@@ -130,7 +134,7 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
     diagnose(kit, result.diagnosis_scenarios, config, student.policy, r, progress, "diagnosing " + name);
 
     FinetuneMaterial material{demo_steps(pool), demo_skills(pool), r.diagnosis, config.num_targets};
-    for (StudyCondition c : kFinetuneConditions) r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}});
+    for (StudyCondition c : kFinetuneConditions) r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}, {}});
     const int units = config.evaluation_sets * (1 + static_cast<int>(r.conditions.size()));
     const std::string phase = "fine-tuning " + name;
     for (int k = 0; k < config.evaluation_sets; ++k) {
@@ -140,19 +144,24 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
       report(progress, phase, k * (1 + static_cast<int>(r.conditions.size())) + 1, units);
       const std::uint64_t data_seed = derived_seed(config.seed, kFinetuneData, k);
       const int pairs = config.finetune_pairs > 0 ? config.finetune_pairs : individualized_round_pairs(material, data_seed);
+      const int own = static_cast<int>(std::lround(config.finetune_rehearsal * pairs));
+      const BcDataset rehearsal = sample_pairs(student.training_data, own, derived_seed(config.seed, kRehearsal, s, k));
       for (std::size_t c = 0; c < r.conditions.size(); ++c) {
         ConditionResult& out = r.conditions[c];
         const FinetuneData data = finetune_data(out.condition, material, pairs, data_seed);
+        BcDataset training_pairs = data.pairs;
+        if (own > 0) training_pairs.append(rehearsal);
         BcPolicy copy = student.policy.clone();
         BcTrainingConfig training;
         training.epochs = config.finetune_epochs;
         training.seed = derived_seed(config.seed, kFinetuneTraining, s, k);  // same for every condition: paired
-        out.finetune_loss.push_back(copy.train(data.pairs, training));
+        out.finetune_loss.push_back(copy.train(training_pairs, training));
         const ParkingScore after = score_parking_student(copy, sets[static_cast<std::size_t>(k)]);
         out.reward.push_back(after.mean_reward);
         out.success.push_back(after.success_rate);
         out.pairs.push_back(data.pairs.size());
         out.reverse_pairs.push_back(count_reverse_pairs(data.pairs));
+        out.rehearsal_pairs.push_back(rehearsal.size());
         report(progress, phase, k * (1 + static_cast<int>(r.conditions.size())) + 2 + static_cast<int>(c), units);
       }
     }

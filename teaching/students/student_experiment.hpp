@@ -31,6 +31,10 @@ struct StudentExperimentConfig {
   int num_targets = 3;
   int finetune_epochs = 100;
   int finetune_pairs = 0;  // per condition; 0 = one round of Ind. Drills of each set (finetune_data.hpp)
+  // Ours, not the paper's: every condition's fine-tuning data also holds round(rehearsal x pairs) of the
+  // student's own training pairs (the same draw for every condition of a set), the usual remedy for
+  // forgetting what the practice material does not show. 0 = the paper's protocol.
+  double finetune_rehearsal = 0.0;
   int evaluation_sets = 15;
   int scenarios_per_set = 20;
 
@@ -48,6 +52,7 @@ struct ConditionResult {
   std::vector<int> pairs;         // per set: fine-tuning pairs (equal across conditions)
   std::vector<int> reverse_pairs; // per set: of which with reverse acceleration (u0 < 0)
   std::vector<double> finetune_loss;  // per set: last epoch's training MSE
+  std::vector<int> rehearsal_pairs;   // per set: the student's own pairs added (finetune_rehearsal)
 };
 
 struct StudentResult {

@@ -85,7 +85,10 @@ std::string student_experiment_table(const StudentExperimentResult& result, cons
   if (!result.extractor_notice.empty()) out += " (" + result.extractor_notice + ")";
   out += "; expert pool " + std::to_string(result.pool_size) + " demos, " + std::to_string(result.expert_pairs);
   out += " pairs, expert score " + format("%.4f", result.expert_pool_reward) + "\n";
-  out += "fine-tuning: " + std::to_string(c.finetune_epochs) + " epochs on equal-size data per set\n\n";
+  out += "fine-tuning: " + std::to_string(c.finetune_epochs) + " epochs on equal-size data per set";
+  if (c.finetune_rehearsal > 0)
+    out += ", each condition's data plus " + format("%g", c.finetune_rehearsal) + "x as many of the student's own pairs (rehearsal)";
+  out += "\n\n";
   cell(out, "student", 21);
   cell(out, "condition", 16);
   cell(out, "reward (last step)", 19);
@@ -145,6 +148,7 @@ Json student_experiment_json(const StudentExperimentResult& result, const TaskKi
               {"diagnosis_scenarios", result.diagnosis_scenarios},
               {"config", {{"diagnosis_scenarios", c.diagnosis_scenarios}, {"num_targets", c.num_targets},
                           {"finetune_epochs", c.finetune_epochs}, {"finetune_pairs", c.finetune_pairs},
+                          {"finetune_rehearsal", c.finetune_rehearsal},
                           {"evaluation_sets", c.evaluation_sets}, {"scenarios_per_set", c.scenarios_per_set}}}};
   Json students = Json::array();
   for (const StudentResult& s : result.students) {
@@ -156,7 +160,8 @@ Json student_experiment_json(const StudentExperimentResult& result, const TaskKi
     for (const ConditionResult& r : s.conditions)
       conditions.push_back({{"condition", condition_name(r.condition)}, {"key", condition_key(r.condition)},
                             {"reward", stats_json(r.reward)}, {"success", stats_json(r.success)},
-                            {"pairs", r.pairs}, {"reverse_pairs", r.reverse_pairs}, {"finetune_loss", r.finetune_loss}});
+                            {"pairs", r.pairs}, {"reverse_pairs", r.reverse_pairs}, {"rehearsal_pairs", r.rehearsal_pairs},
+                            {"finetune_loss", r.finetune_loss}});
     students.push_back({{"student", student_name(s.recipe.kind)}, {"key", student_key(s.recipe.kind)},
                         {"epochs", s.recipe.epochs}, {"reverse_keep_fraction", s.recipe.reverse_keep_fraction},
                         {"hidden", s.recipe.hidden}, {"training_pairs", s.training_pairs},

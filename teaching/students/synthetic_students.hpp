@@ -38,6 +38,7 @@ struct SyntheticStudent {
   int reverse_pairs_kept = 0;
   double training_loss = 0.0;   // last epoch's mean MSE
   double expert_mse = 0.0;      // MSE on all expert pairs (incl. the dropped reverse ones)
+  BcDataset training_data;      // the pairs it was cloned from (rehearsal material when fine-tuning)
 };
 
 // Deterministic in seed (network initialisation, reverse-pair sample, batch order).

@@ -86,5 +86,19 @@ TEST(BcDatasets, FirstPairsCutsToAnExactSize) {
   EXPECT_EQ(first_pairs(all, 50).size(), 10);
 }
 
+TEST(BcDatasets, SamplePairsDrawsDistinctPairsInOrderDeterministically) {
+  const BcDataset all = toy_pairs(40);
+  const BcDataset a = sample_pairs(all, 10, 7);
+  ASSERT_EQ(a.size(), 10);
+  for (int i = 1; i < a.size(); ++i) EXPECT_LT(a.states[static_cast<std::size_t>(i - 1)], a.states[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < a.size(); ++i)  // each drawn pair is whole: its action belongs to its state
+    EXPECT_EQ(a.actions[static_cast<std::size_t>(2 * i + 1)], a.states[static_cast<std::size_t>(i)]);
+  EXPECT_EQ(sample_pairs(all, 10, 7).states, a.states);
+  EXPECT_NE(sample_pairs(all, 10, 8).states, a.states);
+  EXPECT_NE(a.states, first_pairs(all, 10).states);  // not just the first ones
+  EXPECT_EQ(sample_pairs(all, 99, 7).states, all.states);
+  EXPECT_EQ(sample_pairs(all, 0, 7).size(), 0);
+}
+
 }  // namespace
 }  // namespace sc

@@ -83,6 +83,24 @@ TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
   EXPECT_EQ(reversing.training_pairs, r.expert_pairs - (reversing.reverse_pairs_total - reversing.reverse_pairs_kept));
 }
 
+TEST(StudentExperiment, RehearsalAddsTheStudentsOwnPairsEquallyToEveryCondition) {
+  StudentExperimentConfig c = tiny_config(1);
+  c.finetune_rehearsal = 1.5;
+  const StudentExperimentResult with = run_student_experiment(small_kit(), c);
+  const StudentExperimentResult without = run_student_experiment(small_kit(), tiny_config(1));
+  for (std::size_t s = 0; s < with.students.size(); ++s)
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t cond = 0; cond < 3; ++cond) {
+        const ConditionResult& r = with.students[s].conditions[cond];
+        EXPECT_EQ(r.pairs[k], without.students[s].conditions[cond].pairs[k]) << "the condition's own material is unchanged";
+        EXPECT_EQ(r.rehearsal_pairs[k], std::lround(1.5 * r.pairs[k]));
+        EXPECT_EQ(without.students[s].conditions[cond].rehearsal_pairs[k], 0);
+      }
+  EXPECT_NE(with.students[1].conditions[0].reward, without.students[1].conditions[0].reward);
+  c.finetune_rehearsal = -1;
+  EXPECT_THROW(run_student_experiment(small_kit(), c), InputError);
+}
+
 TEST(StudentExperiment, SameSeedSameNumbersOtherSeedOtherNumbers) {
   const Json a = student_experiment_json(run_student_experiment(small_kit(), tiny_config(5)), small_kit());
   const Json b = student_experiment_json(run_student_experiment(small_kit(), tiny_config(5)), small_kit());

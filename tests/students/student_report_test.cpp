@@ -20,9 +20,9 @@ TEST(StudentReport, ComparesConditionsPairedBySet) {
   StudentResult s;
   s.recipe = SyntheticStudentRecipe::paper(SyntheticStudentKind::ReversingDifficulty);
   // Ind. Drills beats Full Trajectory on all six sets; Drills ties with it on average.
-  s.conditions = {{StudyCondition::IndDrills, {-0.1, -0.2, -0.1, -0.3, -0.2, -0.1}, {}, {}, {}, {}},
-                  {StudyCondition::Drills, {-0.5, -0.3, -0.4, -0.3, -0.6, -0.3}, {}, {}, {}, {}},
-                  {StudyCondition::FullTrajectory, {-0.4, -0.4, -0.5, -0.4, -0.5, -0.2}, {}, {}, {}, {}}};
+  s.conditions = {{StudyCondition::IndDrills, {-0.1, -0.2, -0.1, -0.3, -0.2, -0.1}, {}, {}, {}, {}, {}},
+                  {StudyCondition::Drills, {-0.5, -0.3, -0.4, -0.3, -0.6, -0.3}, {}, {}, {}, {}, {}},
+                  {StudyCondition::FullTrajectory, {-0.4, -0.4, -0.5, -0.4, -0.5, -0.2}, {}, {}, {}, {}, {}}};
   r.students = {s};
   const std::vector<ConditionComparison> c = compare_conditions(r);
   ASSERT_EQ(c.size(), 3u);
