@@ -52,7 +52,8 @@ TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsG
   const DrillPlan plan = plan_of({slice(0, 1), slice(3, 2), slice(4, 0)});
   const PlayableDrill d = kit().projector().project(plan);
   // Initial state: the first segment's expert state (position in metres).
-  const ParkingObservation& s0 = expert(0).states[static_cast<std::size_t>(plan.segments[0].begin)];
+  // A copy: expert() returns a temporary (a reference into it dangled; found by AddressSanitizer).
+  const ParkingObservation s0 = expert(0).states[static_cast<std::size_t>(plan.segments[0].begin)];
   EXPECT_NEAR(d.ghost_path[0][0], s0[0] * 100, 1e-9);
   EXPECT_NEAR(d.ghost_path[0][1], s0[1] * 100, 1e-9);
   ASSERT_GE(d.steps.length(), 1);
