@@ -18,6 +18,10 @@ std::string skillcoach_binary() {
 CommandResult run_skillcoach(std::string_view arguments, std::string_view env_prefix) {
   std::string command(env_prefix);
   if (!command.empty()) command += ' ';
+  if (const char* program_env = std::getenv("SKILLCOACH_PROGRAM_ENV"); program_env != nullptr && *program_env != '\0') {
+    command += program_env;
+    command += ' ';
+  }
   command += '\'';
   command += skillcoach_binary();
   command += "' ";
