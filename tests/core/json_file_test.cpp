@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {
@@ -50,8 +51,7 @@ TEST(JsonFile, WriteThenReadRoundTrips) {
   Json doc = {{"x", 1.25}, {"list", {1, 2, 3}}};
   write_json_file(file, doc);
   EXPECT_EQ(read_json_file(file), doc);
-  for (const auto& entry : std::filesystem::directory_iterator(file.parent_path()))  // no temporary of ours left
-    EXPECT_FALSE(entry.path().string().rfind(file.string(), 0) == 0 && entry.path().extension() == ".tmp") << entry.path();
+  EXPECT_EQ(test::temporaries_left_of(file), 0);
 }
 
 }  // namespace

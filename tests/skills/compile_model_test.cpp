@@ -144,7 +144,7 @@ TEST(CompileModel, ReplacingTheFileMidRunLeavesTheLoadedModelIntact) {
   other.iterations = 1;
   CompileTrainer(other).train(data(), {}).save(path);
   EXPECT_NE(test::read_bytes(path), original);
-  EXPECT_EQ(test::temporary_files_in(path.parent_path()), 0);
+  EXPECT_EQ(test::temporaries_left_of(path), 0);
   EXPECT_EQ(running.extract_all(trajectories), before);
   EXPECT_NO_THROW(CompileModel::load(path, "parking"));
 

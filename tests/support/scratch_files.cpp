@@ -31,10 +31,12 @@ void write_bytes(const std::filesystem::path& file, std::string_view bytes) {
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
-int temporary_files_in(const std::filesystem::path& dir) {
+int temporaries_left_of(const std::filesystem::path& file) {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    count += entry.path().extension() == ".tmp" ? 1 : 0;
+  for (const auto& entry : std::filesystem::directory_iterator(file.parent_path())) {
+    const std::string name = entry.path().filename().string();
+    count += name.rfind(file.filename().string(), 0) == 0 && entry.path().extension() == ".tmp" ? 1 : 0;
+  }
   return count;
 }
 

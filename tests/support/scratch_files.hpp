@@ -12,8 +12,9 @@ std::filesystem::path scratch_path(std::string_view group, std::string_view name
 // <output>/<name>, emptied: removed with everything in it and created again.
 std::filesystem::path fresh_scratch_dir(std::string_view name);
 std::string read_bytes(const std::filesystem::path& file);
-// Files in `dir` whose name ends in ".tmp" (atomic writes must leave none behind).
-int temporary_files_in(const std::filesystem::path& dir);
+// Temporaries of `file` left beside it ("<file>...tmp"; atomic writes must leave none behind). Only that
+// file's: tests running in parallel may be writing their own files in the same directory.
+int temporaries_left_of(const std::filesystem::path& file);
 void write_bytes(const std::filesystem::path& file, std::string_view bytes);
 
 }  // namespace sc::test
