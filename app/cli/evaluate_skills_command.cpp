@@ -26,7 +26,23 @@ struct EvaluateArgs {
   std::string model;
   int count = 200;
   std::optional<unsigned long long> seed;
+  bool details = false;
 };
+
+// One entry per demonstration: what it is, its true boundaries (writing) and the predicted segments, so a
+// researcher can see *where* a model goes wrong, not only the totals.
+Json demo_details(const SkillDataSet& data, const std::vector<Segmentation>& segmentations) {
+  Json out = Json::array();
+  for (std::size_t i = 0; i < data.demos.size(); ++i) {
+    Json segments = Json::array();
+    for (const SkillSegment& s : segmentations[i].segments) segments.push_back(Json::array({s.skill, s.begin, s.end}));
+    out.push_back({{"label", data.demos[i].label},
+                   {"steps", data.demos[i].steps.length()},
+                   {"true_boundaries", data.demos[i].true_boundaries},
+                   {"segments", std::move(segments)}});
+  }
+  return out;
+}
 
 int run(const EvaluateArgs& args) {
   const int state_dim = args.task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
@@ -48,6 +64,7 @@ int run(const EvaluateArgs& args) {
   report["seed"] = seed;
   report["action_reconstruction_error"] = model.action_reconstruction_error(steps);
   report["segmentation_seconds"] = seconds;
+  if (args.details) report["demos"] = demo_details(data, segmentations);
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
 }
@@ -58,6 +75,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--model", args->model, "CompILE model file")->required();
   sub.add_option("--count", args->count, "Demonstrations to generate")->capture_default_str()->check(CLI::Range(1, 100000));
   sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1)");
+  sub.add_flag("--details", args->details,
+               "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");
   return [args] { return run(*args); };
 }
 

@@ -32,6 +32,29 @@ TEST(EvaluateSkillsCommand, WritingReportsBoundaryScoresUsageAndReconstructionOn
   EXPECT_FALSE(d.contains("purity"));
 }
 
+TEST(EvaluateSkillsCommand, DetailsListEveryWordWithItsTrueBoundariesAndContiguousSegments) {
+  const auto plain = run_skillcoach("evaluate-skills --task writing --count 3 --model " + test::tiny_model("writing").string());
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_FALSE(json_of(plain.output).contains("demos"));
+  const auto r =
+      run_skillcoach("evaluate-skills --task writing --count 3 --details --model " + test::tiny_model("writing").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json demos = json_of(r.output).at("demos");
+  ASSERT_EQ(demos.size(), 3u);
+  for (const Json& d : demos) {
+    EXPECT_EQ(d.at("label").get<std::string>().size(), 8u) << d;  // an 8-symbol word
+    EXPECT_EQ(d.at("true_boundaries").size(), 7u) << d;
+    // Segments [skill, begin, end] tile [0, steps) in order.
+    int next = 0;
+    for (const Json& s : d.at("segments")) {
+      EXPECT_EQ(s.at(1).get<int>(), next) << d;
+      EXPECT_GT(s.at(2).get<int>(), s.at(1).get<int>()) << d;
+      next = s.at(2).get<int>();
+    }
+    EXPECT_EQ(next, d.at("steps").get<int>()) << d;
+  }
+}
+
 TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
   const auto r = run_skillcoach("evaluate-skills --task parking --count 4 --model " + test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
