@@ -1,8 +1,10 @@
 #include "engine/core/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <system_error>
@@ -25,28 +27,52 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& file) {
   return tmp;
 }
 
-void write_file_atomically(const std::filesystem::path& file, std::string_view bytes) {
-  const std::filesystem::path tmp = temporary_sibling(file);
-  auto discard = [&tmp] {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-  };
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(file.string(), "cannot be written");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      discard();
-      throw InputError(file.string(), "write failed (disk full?)");
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+// Writes all of `bytes` to `fd`, retrying after signals; false with errno set on failure.
+bool write_all(int fd, std::string_view bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const auto n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = ENOSPC;
+      return false;
     }
+    done += static_cast<std::size_t>(n);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, file, ec);
-  if (ec) {
-    discard();
-    throw InputError(file.string(), "cannot be replaced: " + ec.message());
+  return true;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes, FileDurability durability) {
+  const bool durable = durability == FileDurability::Durable;
+  const std::filesystem::path tmp = temporary_sibling(file);
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(file.string(), "cannot be written: " + errno_text());
+  auto fail = [&tmp, &file](const std::string& what) {
+    const std::string reason = errno_text();
+    ::unlink(tmp.c_str());
+    throw InputError(file.string(), what + reason);
+  };
+  if (!write_all(fd, bytes)) {
+    const int saved = errno;
+    ::close(fd);
+    errno = saved;
+    fail("write failed (disk full?): ");
+  }
+  // close() can report a deferred write error (NFS, quota), so it is checked like the writes.
+  if ((durable && ::fsync(fd) != 0) || ::close(fd) != 0) fail("write failed (disk full?): ");
+  if (::rename(tmp.c_str(), file.c_str()) != 0) fail("cannot be replaced: ");
+  if (!durable) return;
+  // Make the rename itself durable.
+  const int dir = ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
   }
 }
 

@@ -11,8 +11,16 @@ namespace sc {
 // "<file>.<pid>-<thread hash>.tmp", in the same directory (rename must not cross file systems).
 std::filesystem::path temporary_sibling(const std::filesystem::path& file);
 
+// Normal: the rename is atomic, but after a power cut the file may still be the old one (or, on some file
+// systems, empty). Durable: the bytes and then the rename are fsync'ed before returning, for data that
+// exists precisely because the machine may go down before it can be stored properly (the pending-writes
+// spill file of teaching/records).
+enum class FileDurability { Normal, Durable };
+
 // Writes `bytes` to `file` through temporary_sibling(file). On failure the temporary is removed and an
-// InputError names `file`: "cannot be written", "write failed (disk full?)" or "cannot be replaced: ...".
-void write_file_atomically(const std::filesystem::path& file, std::string_view bytes);
+// InputError names `file`: "cannot be written: <reason>", "write failed (disk full?): <reason>" or
+// "cannot be replaced: <reason>".
+void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
+                           FileDurability durability = FileDurability::Normal);
 
 }  // namespace sc

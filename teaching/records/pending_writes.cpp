@@ -1,11 +1,5 @@
 #include "teaching/records/pending_writes.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
@@ -43,44 +37,6 @@ PendingWrite write_from_json(const JsonView& node) {
   node.at("type").fail("unknown pending write type \"" + type + "\"");
 }
 
-std::string errno_text() { return std::strerror(errno); }
-
-// write_json_file() without fsync is not enough here: the spill exists precisely for the case where the
-// machine may go down before the database is writable again.
-void write_durably(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path tmp = temporary_sibling(file);
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(file.string(), "cannot be written: " + errno_text());
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const auto n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string reason = errno_text();
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      throw InputError(file.string(), "cannot be written: " + reason);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string reason = errno_text();
-    ::unlink(tmp.c_str());
-    throw InputError(file.string(), "cannot be written: " + reason);
-  }
-  if (::rename(tmp.c_str(), file.c_str()) != 0) {
-    const std::string reason = errno_text();
-    ::unlink(tmp.c_str());
-    throw InputError(file.string(), "cannot be replaced: " + reason);
-  }
-  // Make the rename itself durable.
-  const int dir = ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY);
-  if (dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
-}
-
 }  // namespace
 
 std::int64_t session_of(const PendingWrite& write) {
@@ -105,7 +61,9 @@ void write_spill_file(const std::filesystem::path& spill, const std::filesystem:
   Json list = Json::array();
   for (const auto& write : writes) list.push_back(write_to_json(write));
   doc["writes"] = std::move(list);
-  write_durably(spill, doc.dump(1) + "\n");
+  // write_json_file() without fsync is not enough here: the spill exists precisely for the case where the
+  // machine may go down before the database is writable again.
+  write_file_atomically(spill, doc.dump(1) + "\n", FileDurability::Durable);
 }
 
 std::vector<PendingWrite> read_spill_file(const std::filesystem::path& spill) {

@@ -1,8 +1,11 @@
 #include "engine/core/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include <cstdlib>
 #include <filesystem>
@@ -70,6 +73,46 @@ TEST(AtomicFile, FailedReplaceNamesTheFileAndRemovesTheTemporary) {
   }
   EXPECT_EQ(entries_in(dir), 1) << "only the directory that was in the way";
   EXPECT_THROW(write_file_atomically(dir / "no-such-dir" / "x.json", "{}"), InputError);
+}
+
+TEST(AtomicFile, DurableWriteReplacesTheFileLikeANormalOne) {
+  const fs::path dir = fresh_dir("durable");
+  const fs::path file = dir / "pending.json";
+  write_file_atomically(file, "old", FileDurability::Durable);
+  write_file_atomically(file, "new and longer", FileDurability::Durable);
+  EXPECT_EQ(read_all(file), "new and longer");
+  EXPECT_EQ(entries_in(dir), 1);
+}
+
+// A write that stops half-way (here a file-size limit, which fails like a full disk: EFBIG) keeps the old
+// file whole, removes the temporary and says "write failed (disk full?)". In a child: the limit is per process.
+TEST(AtomicFile, WriteFailingHalfWayKeepsTheOldFileAndRemovesTheTemporary) {
+  for (const FileDurability durability : {FileDurability::Normal, FileDurability::Durable}) {
+    const fs::path dir = fresh_dir(durability == FileDurability::Durable ? "full_durable" : "full_normal");
+    const fs::path file = dir / "trial.json";
+    write_file_atomically(file, "the old, complete file");
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      std::signal(SIGXFSZ, SIG_IGN);
+      rlimit limit{};
+      ::getrlimit(RLIMIT_FSIZE, &limit);
+      limit.rlim_cur = 4096;
+      ::setrlimit(RLIMIT_FSIZE, &limit);
+      try {
+        write_file_atomically(file, std::string(100000, 'x'), durability);
+      } catch (const InputError& e) {
+        _exit(std::string(e.what()).rfind(file.string() + ": write failed (disk full?): ", 0) == 0 ? 0 : 3);
+      }
+      _exit(2);  // no error at all
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "2: no error, 3: another message";
+    EXPECT_EQ(read_all(file), "the old, complete file");
+    EXPECT_EQ(entries_in(dir), 1) << "the temporary is left over";
+  }
 }
 
 }  // namespace
