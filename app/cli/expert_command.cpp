@@ -1,4 +1,7 @@
 // skillcoach expert --task parking: plans scenarios with the planning expert and reports how well it did.
+// skillcoach expert --task writing: the writing expert is the gold trajectory of a word; writes the gold
+// trials of words from the reference's generator (the data train-skills generates), e.g. for
+// `train-skills --data` or `segment --png`.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -14,6 +17,9 @@
 #include "engine/core/rng.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "engine/parking/parking_trial.hpp"
+#include "engine/writing/word_generator.hpp"
+#include "engine/writing/word_trajectory.hpp"
+#include "engine/writing/writing_trial.hpp"
 
 namespace sc::cli {
 namespace {
@@ -93,9 +99,35 @@ int run_many(const ExpertArgs& args) {
   return 0;
 }
 
+int run_writing(const ExpertArgs& args) {
+  if (args.count < 1) throw InputError("--count", "must be at least 1");
+  if (args.out_dir.empty()) throw InputError("--out", "the writing expert needs a directory to write its gold trials to");
+  std::filesystem::create_directories(args.out_dir);
+  Rng rng(args.seed);
+  // The same words and order as train-skills' generated writing data of that seed (two words per draw).
+  const std::vector<std::string> words = writing::generate_classic_words((args.count + 1) / 2, rng);
+  const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
+  std::size_t points = 0;
+  for (int i = 0; i < args.count; ++i) {
+    const std::string& word = words[static_cast<std::size_t>(i)];
+    const writing::WordTrajectory gold = writing::build_word_trajectory(glyphs, word);
+    const writing::WritingTrial trial = writing::gold_trial({word, writing::AlphabetKind::Classic, {}}, gold);
+    points += trial.points.size();
+    char name[32];
+    std::snprintf(name, sizeof name, "expert_%05d.json", i);
+    writing::write_writing_trial(std::filesystem::path(args.out_dir) / name, trial);
+  }
+  std::printf("writing expert, %d classic words (seed %llu): gold trajectories, %.0f pen points per word on average\n",
+              args.count, args.seed, static_cast<double>(points) / args.count);
+  std::printf("  trial files             %s/expert_*.json\n", args.out_dir.c_str());
+  return 0;
+}
+
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<ExpertArgs>();
-  sub.add_option("--task", args->task, "Task to plan (only \"parking\")")->required();
+  sub.add_option("--task", args->task, "parking (plans scenarios) or writing (gold trials of generated words, needs --out)")
+      ->required()
+      ->check(CLI::IsMember({"parking", "writing"}));
   sub.add_option("--count", args->count, "Number of random scenarios (default 100)");
   sub.add_option("--seed", args->seed, "Seed of the scenario sampler (default 0)");
   sub.add_option("--variant", args->variant, "Lot variant: classic (the paper's empty lot) or parked");
@@ -103,13 +135,16 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--out", args->out_dir, "Directory to write one trial file per scenario (source \"expert\")");
   sub.add_option("--scenario", args->scenario_file, "Plan one scenario from a trial file or a bare scenario object");
   return [args] {
-    if (args->task != "parking")
-      throw InputError("--task", "the expert exists for \"parking\" only (got \"" + args->task + "\")");
+    if (args->task == "writing") {
+      if (!args->scenario_file.empty() || args->variant != "classic" || args->reverse_in > 0.0)
+        throw InputError("--task writing", "--scenario, --variant and --reverse-in are parking options");
+      return run_writing(*args);
+    }
     return args->scenario_file.empty() ? run_many(*args) : run_one(*args);
   };
 }
 
-const CommandRegistration kReg{{"expert", "Plan parking scenarios with the planning expert and summarise the results",
+const CommandRegistration kReg{{"expert", "Plan parking scenarios with the expert and summarise them, or write writing gold trials",
                                 "skillcoach expert --task parking --count 1000 --seed 1 --variant parked", setup}};
 
 }  // namespace
