@@ -27,6 +27,7 @@ ImU32 imgui_color(Color c) {
 // The caption and one legend line per segment, top-left on a dark panel.
 void draw_legend(const ImGuiLayer& imgui, const std::string& caption, const Segmentation& segmentation) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
+  const SkillColors colors(segmentation);
   const float s = imgui.scale();
   const ImVec2 origin(14.0f * s, 12.0f * s);
   const float line = ImGui::GetFontSize() * 1.35f;
@@ -37,7 +38,7 @@ void draw_legend(const ImGuiLayer& imgui, const std::string& caption, const Segm
   for (std::size_t i = 0; i < segmentation.segments.size(); ++i) {
     const SkillSegment& seg = segmentation.segments[i];
     const float y = origin.y + line * static_cast<float>(i + 1);
-    dl->AddRectFilled({origin.x, y + 3 * s}, {origin.x + 22 * s, y + line - 6 * s}, imgui_color(skill_color(seg.skill)), 3 * s);
+    dl->AddRectFilled({origin.x, y + 3 * s}, {origin.x + 22 * s, y + line - 6 * s}, imgui_color(colors.of(seg.skill)), 3 * s);
     const std::string text = "skill " + std::to_string(seg.skill) + ": steps " + std::to_string(seg.begin) + "-" +
                              std::to_string(seg.end - 1);
     dl->AddText({origin.x + 30 * s, y}, IM_COL32(235, 238, 242, 255), text.c_str());
@@ -68,12 +69,17 @@ const Color kBoundaryRing = Color::hex(0x111418);
 
 }  // namespace
 
-Color skill_color(int skill) {
-  static constexpr std::array<std::uint32_t, 24> kPalette = {
-      0xe6194b, 0x3cb44b, 0x4363d8, 0xf58231, 0x911eb4, 0x42d4f4, 0xf032e6, 0xbfef45,
-      0x9a6324, 0x469990, 0x800000, 0x000075, 0xffe119, 0xdcbeff, 0xaaffc3, 0x808000,
-      0xfabed4, 0xffd8b1, 0xa9a9a9, 0x1f77b4, 0xd62728, 0x2ca02c, 0x8c564b, 0x17becf};
-  const auto i = static_cast<std::size_t>(skill < 0 ? -skill : skill) % kPalette.size();
+SkillColors::SkillColors(const Segmentation& segmentation) {
+  for (const SkillSegment& seg : segmentation.segments)
+    if (std::find(order_.begin(), order_.end(), seg.skill) == order_.end()) order_.push_back(seg.skill);
+}
+
+Color SkillColors::of(int skill) const {
+  static constexpr std::array<std::uint32_t, 12> kPalette = {0xe6194b, 0x3cb44b, 0x4363d8, 0xf58231,
+                                                             0x911eb4, 0x2bb5d8, 0xf032e6, 0x9a6324,
+                                                             0x469990, 0x808000, 0xc2a000, 0x7f7f7f};
+  const auto at = std::find(order_.begin(), order_.end(), skill);
+  const auto i = static_cast<std::size_t>(at - order_.begin()) % kPalette.size();
   return Color::hex(kPalette[i]);
 }
 
@@ -91,13 +97,14 @@ RgbaImage render_parking_segments(const ParkingTrial& trial, const Segmentation&
   auto sample = [&](int step) {
     return std::min(points.size() - 1, static_cast<std::size_t>(step) * parking::kSubstepsPerAction);
   };
+  const SkillColors colors(segmentation);
   return render(width, height, Color::hex(0x14181f), caption, segmentation, [&](Renderer2D& r, PixelViewport viewport) {
     r.set_camera(parking_scene_camera(view, CameraMode::whole_lot, viewport));
     paint_parking_scene(r, view);
     const PathStyle round{LineJoin::round, LineCap::round};
     for (const SkillSegment& seg : segmentation.segments) {
       const std::size_t a = sample(seg.begin), b = sample(seg.end);
-      if (b > a) r.polyline(std::span(points).subspan(a, b - a + 1), Stroke::world(0.45f), skill_color(seg.skill), round);
+      if (b > a) r.polyline(std::span(points).subspan(a, b - a + 1), Stroke::world(0.45f), colors.of(seg.skill), round);
     }
     for (std::size_t i = 0; i + 1 < segmentation.segments.size(); ++i) {
       const Vec2f p = points[sample(segmentation.segments[i].end)];
@@ -112,6 +119,7 @@ RgbaImage render_writing_segments(const writing::WritingTrial& trial, const std:
   const std::vector<writing::TracePoint> gold = writing::gold_trajectory(trial.scenario).points();
   const writing_view::WritingCanvasLook look;
   const std::size_t last = points.empty() ? 0 : points.size() - 1;
+  const SkillColors colors(segmentation);
   return render(width, height, look.desk, caption, segmentation, [&](Renderer2D& r, PixelViewport viewport) {
     r.set_camera(writing_view::writing_canvas_camera(viewport));
     writing_view::paint_paper(r, look);
@@ -119,7 +127,7 @@ RgbaImage render_writing_segments(const writing::WritingTrial& trial, const std:
     for (const SkillSegment& seg : segmentation.segments) {
       const std::size_t a = std::min(last, static_cast<std::size_t>(seg.begin));
       const std::size_t b = std::min(last, static_cast<std::size_t>(seg.end));
-      if (b > a) writing_view::paint_ink(r, std::span(points).subspan(a, b - a + 1), skill_color(seg.skill), 4.0f);
+      if (b > a) writing_view::paint_ink(r, std::span(points).subspan(a, b - a + 1), colors.of(seg.skill), 4.0f);
     }
     for (std::size_t i = 0; i + 1 < segmentation.segments.size(); ++i) {
       const writing::TracePoint& p = points[std::min(last, static_cast<std::size_t>(segmentation.segments[i].end))];
