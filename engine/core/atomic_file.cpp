@@ -64,8 +64,13 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
     errno = saved;
     fail("write failed (disk full?): ");
   }
-  // close() can report a deferred write error (NFS, quota), so it is checked like the writes.
-  if ((durable && ::fsync(fd) != 0) || ::close(fd) != 0) fail("write failed (disk full?): ");
+  // close() can report a deferred write error (NFS, quota), so it is checked like the writes; it runs even
+  // when fsync failed, so the descriptor is never leaked.
+  const bool synced = !durable || ::fsync(fd) == 0;
+  const int sync_errno = errno;
+  const bool closed = ::close(fd) == 0;
+  if (!synced) errno = sync_errno;
+  if (!synced || !closed) fail("write failed (disk full?): ");
   if (::rename(tmp.c_str(), file.c_str()) != 0) fail("cannot be replaced: ");
   if (!durable) return;
   // Make the rename itself durable.
