@@ -3,6 +3,7 @@
 # Release into build/, then either starts the trainer (`run`) or runs the whole test suite (`test`).
 #   scripts/setup.sh run     # install + build + start the trainer (headless demo when there is no display)
 #   scripts/setup.sh test    # install + build + ctest
+#   scripts/setup.sh install PKG...   # only install those Debian packages when missing
 set -euo pipefail
 
 mode="${1:-run}"
@@ -21,17 +22,26 @@ packages=(
   fonts-dejavu-core xvfb xauth
 )
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
+# Installs those of the given Debian packages that are missing (root or sudo needed only then).
+install_missing() {
+  local missing=() p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  ((${#missing[@]})) || return 0
   echo "==> installing ${#missing[@]} Debian packages: ${missing[*]}"
-  sudo=""
+  local sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+# `install PKG...`: only that (used by .ci/run for the tools of its optional steps, e.g. clang).
+if [ "$mode" = install ]; then
+  install_missing "$@"
+  exit 0
 fi
+install_missing "${packages[@]}"
 
 # Torch is ~5x slower on the reference BLAS: make OpenBLAS the active libblas if both are installed.
 if [ -e /usr/lib/x86_64-linux-gnu/openblas-pthread/libblas.so.3 ] && [ "$(id -u)" -eq 0 ]; then

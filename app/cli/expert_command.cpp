@@ -103,9 +103,7 @@ int run_writing(const ExpertArgs& args) {
   if (args.count < 1) throw InputError("--count", "must be at least 1");
   if (args.out_dir.empty()) throw InputError("--out", "the writing expert needs a directory to write its gold trials to");
   std::filesystem::create_directories(args.out_dir);
-  Rng rng(args.seed);
-  // The same words and order as train-skills' generated writing data of that seed (two words per draw).
-  const std::vector<std::string> words = writing::generate_classic_words((args.count + 1) / 2, rng);
+  const std::vector<std::string> words = writing::classic_words(args.count, args.seed);
   const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
   std::size_t points = 0;
   for (int i = 0; i < args.count; ++i) {

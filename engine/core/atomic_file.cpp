@@ -53,25 +53,18 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
   const std::filesystem::path tmp = temporary_sibling(file);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError(file.string(), "cannot be written: " + errno_text());
-  auto fail = [&tmp, &file](const std::string& what) {
-    const std::string reason = errno_text();
+  // Every failure removes the temporary and names the file; `reason` is read before close() can change errno.
+  auto fail = [&tmp, &file](const std::string& what, const std::string& reason) {
     ::unlink(tmp.c_str());
     throw InputError(file.string(), what + reason);
   };
-  if (!write_all(fd, bytes)) {
-    const int saved = errno;
-    ::close(fd);
-    errno = saved;
-    fail("write failed (disk full?): ");
-  }
-  // close() can report a deferred write error (NFS, quota), so it is checked like the writes; it runs even
-  // when fsync failed, so the descriptor is never leaked.
-  const bool synced = !durable || ::fsync(fd) == 0;
-  const int sync_errno = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!synced) errno = sync_errno;
-  if (!synced || !closed) fail("write failed (disk full?): ");
-  if (::rename(tmp.c_str(), file.c_str()) != 0) fail("cannot be replaced: ");
+  std::string reason;
+  if (!write_all(fd, bytes) || (durable && ::fsync(fd) != 0)) reason = errno_text();
+  // close() can report a deferred write error (NFS, quota), so it is checked like the writes; it runs in
+  // every case, so the descriptor is never leaked.
+  if (::close(fd) != 0 && reason.empty()) reason = errno_text();
+  if (!reason.empty()) fail("write failed (disk full?): ", reason);
+  if (::rename(tmp.c_str(), file.c_str()) != 0) fail("cannot be replaced: ", errno_text());
   if (!durable) return;
   // Make the rename itself durable.
   const int dir = ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);

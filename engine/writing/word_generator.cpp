@@ -1,5 +1,6 @@
 #include "engine/writing/word_generator.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sc::writing {
@@ -39,6 +40,13 @@ std::vector<std::string> generate_classic_words(int pairs, Rng& rng) {
     const auto six2 = classic_sixgrams()[draw_weighted(classic_sixgrams(), rng)].text;
     words.push_back(std::string(two2) + std::string(six2));
   }
+  return words;
+}
+
+std::vector<std::string> classic_words(int count, std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<std::string> words = generate_classic_words((std::max(count, 0) + 1) / 2, rng);
+  words.resize(static_cast<std::size_t>(std::max(count, 0)));
   return words;
 }
 

@@ -26,6 +26,9 @@ std::size_t draw_weighted(const std::vector<WeightedNgram>& table, Rng& rng);
 
 // `pairs` draws -> 2 * pairs words; the reference used pairs = 1000 with numpy seed 0.
 std::vector<std::string> generate_classic_words(int pairs, Rng& rng);
+// The first `count` words of generate_classic_words from Rng(seed): THE generated words of a seed, shared by
+// train-skills/evaluate-skills (their demonstrations) and `expert --task writing` (their trial files).
+std::vector<std::string> classic_words(int count, std::uint64_t seed);
 std::string generate_balinese_word(Rng& rng);
 
 }  // namespace sc::writing

@@ -45,8 +45,7 @@ SkillDataSet generate_parking_demos(int count, std::uint64_t seed) {
 
 SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   if (count < 1) throw InputError("writing demonstrations", "count must be at least 1");
-  Rng rng(seed);
-  const std::vector<std::string> words = writing::generate_classic_words((count + 1) / 2, rng);
+  const std::vector<std::string> words = writing::classic_words(count, seed);
   const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
   SkillDataSet out{"writing", "", {}};
   for (int i = 0; i < count; ++i) {

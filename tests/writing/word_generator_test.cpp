@@ -92,5 +92,14 @@ TEST(BalineseWordGenerator, LengthsAndSymbols) {
   for (int k = 2; k <= 4; ++k) EXPECT_NEAR(lengths[k] / 3000.0, 1.0 / 3.0, 0.04);
 }
 
+TEST(ClassicWordGenerator, ClassicWordsOfASeedAreTheFirstWordsOfItsStream) {
+  Rng rng(7);
+  const std::vector<std::string> stream = generate_classic_words(3, rng);  // 6 words
+  EXPECT_EQ(classic_words(6, 7), stream);
+  EXPECT_EQ(classic_words(5, 7), std::vector<std::string>(stream.begin(), stream.begin() + 5));  // odd count
+  EXPECT_TRUE(classic_words(0, 7).empty());
+  EXPECT_NE(classic_words(6, 8), stream);
+}
+
 }  // namespace
 }  // namespace sc::writing
