@@ -43,6 +43,14 @@ Tensor boundary_position_mask(const Batch& batch) {
   return m;
 }
 
+// One-hot [B, P] of boundary k where the caller fixed it (diagnostic: the segmentation is given, so only
+// the latent heads and the decoder learn; the boundary logits are still computed for the KL term).
+Tensor fixed_boundary(const Batch& batch, int k, std::int64_t positions) {
+  std::vector<std::int64_t> at;
+  for (const auto& row : batch.fixed_boundaries) at.push_back(row[static_cast<std::size_t>(k)]);
+  return F::one_hot(torch::tensor(at, torch::kInt64), positions).to(torch::kFloat32);
+}
+
 // Everything the K sequential encoder passes produce.
 struct Encoded {
   std::vector<Tensor> boundary_logits;  // k < K-1: [B, P] masked logits
@@ -78,6 +86,7 @@ Encoded encode(const CompileNetwork& net, const Batch& batch, bool relaxed, at::
       logits = logits.view({positions, b_size}).t() + pos_mask;
       out.boundary_logits.push_back(logits);
       b = relaxed ? torch::softmax(logits + gumbel_like(logits, gen), -1) : one_hot_argmax(logits);
+      if (!batch.fixed_boundaries.empty()) b = fixed_boundary(batch, k, positions);
     } else {
       std::vector<std::int64_t> ends(batch.lengths.begin(), batch.lengths.end());
       b = F::one_hot(torch::tensor(ends, torch::kInt64), positions).to(torch::kFloat32);

@@ -100,7 +100,8 @@ std::vector<torch::Tensor> CompileNetwork::parameters() {
   return out;
 }
 
-Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config) {
+Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config,
+                 const std::vector<const std::vector<int>*>& fixed_boundaries) {
   Batch batch;
   batch.size = static_cast<std::int64_t>(steps.size());
   batch.source.resize(steps.size());
@@ -142,6 +143,8 @@ Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileCon
     }
   batch.pack_index = torch::tensor(pack, torch::kInt64);
   batch.unpack_index = torch::tensor(unpack, torch::kInt64);
+  if (!fixed_boundaries.empty())
+    for (auto i : batch.source) batch.fixed_boundaries.push_back(*fixed_boundaries[i]);
   return batch;
 }
 

@@ -94,9 +94,14 @@ struct Batch {
   Packing encoder;                      // row b runs steps 0..lengths[b] (the extra step reads padding)
   torch::Tensor pack_index;             // [N] packed entry -> t * B + b
   torch::Tensor unpack_index;           // [(T_max+1) * B] -> packed entry, or N for "not computed"
+  // Diagnostic (CompileTrainer::fix_boundaries): [B][K-1] boundary positions 1..T_b in model steps, used
+  // instead of sampled boundaries; empty = boundaries are sampled as usual.
+  std::vector<std::vector<int>> fixed_boundaries;
 };
-// `steps[i]` must match the config's dimensions and have length >= 1.
-Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config);
+// `steps[i]` must match the config's dimensions and have length >= 1. `fixed_boundaries`, when not empty,
+// is parallel to `steps`: each K-1 positions in model steps (see Batch::fixed_boundaries).
+Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config,
+                 const std::vector<const std::vector<int>*>& fixed_boundaries = {});
 
 // Decoder pass 1 (no autograd): open-loop steps from (h_init, c_init) [rows, H] over `packing`, writing each
 // step's input into fb_action [N, A] / fb_state [N, S] (zero at step 0; fb_state unused without states) and

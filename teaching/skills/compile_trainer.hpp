@@ -60,9 +60,19 @@ class CompileTrainer {
                      const ProgressCallback& progress = {});
   const TrainingSummary& summary() const { return summary_; }
 
+  // Diagnostic: the next train() fixes every boundary instead of sampling it. Entry i lists trajectory i's
+  // interior boundaries (action indices, strictly ascending, inside 1..T-1, at most K-1 of them; missing
+  // ones fall at the end, i.e. empty last segments). Only the latent heads and the decoder then learn from
+  // reconstruction (the boundary head sees only the prior), so such a model measures what CompILE's
+  // objective gives a chosen segmentation (its validation NLL); it is not meant for segmenting.
+  // train() throws InputError when the lists do not match the data.
+  void fix_boundaries(std::vector<std::vector<int>> train_boundaries, std::vector<std::vector<int>> valid_boundaries);
+
  private:
   CompileConfig config_;
   TrainingSummary summary_;
+  std::vector<std::vector<int>> fixed_train_, fixed_valid_;
+  bool fixed_ = false;
 };
 
 }  // namespace sc

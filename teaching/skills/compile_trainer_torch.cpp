@@ -1,5 +1,6 @@
 // CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept;
 // several runs (restarts) in parallel, the best by validation NLL kept.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -30,16 +31,62 @@ Json TrainingSummary::to_json() const {
 
 CompileTrainer::CompileTrainer(CompileConfig config) : config_(std::move(config)) {}
 
+void CompileTrainer::fix_boundaries(std::vector<std::vector<int>> train_boundaries,
+                                    std::vector<std::vector<int>> valid_boundaries) {
+  fixed_train_ = std::move(train_boundaries);
+  fixed_valid_ = std::move(valid_boundaries);
+  fixed_ = true;
+}
+
 namespace {
 
-std::vector<Batch> fixed_batches(const std::vector<ModelSteps>& data, const CompileConfig& config) {
+// Boundary positions in model steps (empty when boundaries are not fixed), one list per trajectory.
+using FixedPositions = std::vector<std::vector<int>>;
+
+std::vector<Batch> fixed_batches(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
+                                 const CompileConfig& config) {
   std::vector<Batch> out;
   const auto bs = static_cast<std::size_t>(config.batch_size);
   for (std::size_t first = 0; first < data.size(); first += bs) {
     std::vector<const StepSequence*> chunk;
+    std::vector<const std::vector<int>*> chunk_fixed;
     for (std::size_t i = first; i < std::min(data.size(), first + bs); ++i)
-      if (data[i].steps.length() > 0) chunk.push_back(&data[i].steps);
-    if (!chunk.empty()) out.push_back(compile_detail::make_batch(chunk, config));
+      if (data[i].steps.length() > 0) {
+        chunk.push_back(&data[i].steps);
+        if (!fixed.empty()) chunk_fixed.push_back(&fixed[i]);
+      }
+    if (!chunk.empty()) out.push_back(compile_detail::make_batch(chunk, config, chunk_fixed));
+  }
+  return out;
+}
+
+// Maps each trajectory's interior boundaries (action indices) to the K-1 boundary positions of the model:
+// a boundary at action b becomes the first model step that starts at or after b; missing ones go to the
+// end. Throws InputError naming `what` when a list does not fit its trajectory.
+FixedPositions to_fixed_positions(const std::vector<std::vector<int>>& boundaries, const std::vector<ModelSteps>& steps,
+                                  int num_segments, const std::string& what) {
+  if (boundaries.size() != steps.size())
+    throw InputError(what, std::to_string(boundaries.size()) + " boundary lists for " + std::to_string(steps.size()) +
+                               " trajectories");
+  FixedPositions out;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const std::string where = what + " " + std::to_string(i);
+    const auto& begin = steps[i].original_begin;
+    const int length = begin.back(), model_length = steps[i].steps.length();
+    if (boundaries[i].size() > static_cast<std::size_t>(num_segments - 1))
+      throw InputError(where, std::to_string(boundaries[i].size()) + " boundaries, the model has only " +
+                                  std::to_string(num_segments - 1));
+    std::vector<int> positions;
+    int previous = 0;
+    for (int b : boundaries[i]) {
+      if (b <= previous || b >= length)
+        throw InputError(where, "boundary " + std::to_string(b) + " is not ascending inside 1.." + std::to_string(length - 1));
+      previous = b;
+      const auto at = std::lower_bound(begin.begin(), begin.end(), b) - begin.begin();
+      positions.push_back(std::clamp(static_cast<int>(at), 1, std::max(1, model_length)));
+    }
+    positions.resize(static_cast<std::size_t>(num_segments - 1), std::max(1, model_length));
+    out.push_back(std::move(positions));
   }
   return out;
 }
@@ -70,14 +117,17 @@ struct RunResult {
 // One pass over the training split in its current order: an Adam step per batch; the loss terms are added
 // to `p` as means over the pass's trajectories.
 void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator,
-                    const std::vector<ModelSteps>& train_steps, const std::vector<std::size_t>& order,
-                    TrainingProgress& p) {
+                    const std::vector<ModelSteps>& train_steps, const FixedPositions& fixed,
+                    const std::vector<std::size_t>& order, TrainingProgress& p) {
   const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
   for (std::size_t first = 0; first < order.size(); first += batch_size) {
     std::vector<const StepSequence*> chunk;
-    for (std::size_t i = first; i < std::min(order.size(), first + batch_size); ++i)
+    std::vector<const std::vector<int>*> chunk_fixed;
+    for (std::size_t i = first; i < std::min(order.size(), first + batch_size); ++i) {
       chunk.push_back(&train_steps[order[i]].steps);
-    const Batch batch = compile_detail::make_batch(chunk, net.config);
+      if (!fixed.empty()) chunk_fixed.push_back(&fixed[order[i]]);
+    }
+    const Batch batch = compile_detail::make_batch(chunk, net.config, chunk_fixed);
     const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
     optimizer.zero_grad();
     losses.total.backward();
@@ -92,7 +142,7 @@ void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at
 }
 
 RunResult train_run(const CompileConfig& config, int restart, const std::vector<ModelSteps>& train_steps,
-                    std::vector<std::size_t> usable, const std::vector<Batch>& valid_batches,
+                    const FixedPositions& fixed, std::vector<std::size_t> usable, const std::vector<Batch>& valid_batches,
                     const std::function<void(TrainingProgress&)>& report) {
   const auto start_time = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(); };
@@ -112,7 +162,7 @@ RunResult train_run(const CompileConfig& config, int restart, const std::vector<
     p.restart = restart;
     p.iteration = it;
     p.iterations = config.iterations;
-    train_one_pass(net, optimizer, generator, train_steps, usable, p);
+    train_one_pass(net, optimizer, generator, train_steps, fixed, usable, p);
     if (!std::isfinite(p.loss))
       throw InputError("compile training", "loss became non-finite at iteration " + std::to_string(it) +
                                                " (learning rate too high or data not normalised?)");
@@ -163,7 +213,12 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   for (std::size_t i = 0; i < train_steps.size(); ++i)
     if (train_steps[i].steps.length() > 0) usable.push_back(i);
   if (usable.empty()) throw InputError("training data", "every trajectory is empty");
-  const std::vector<Batch> valid_batches = fixed_batches(valid_steps, config_);
+  FixedPositions fixed_train, fixed_valid;
+  if (fixed_) {
+    fixed_train = to_fixed_positions(fixed_train_, train_steps, config_.num_segments, "fixed boundaries of training trajectory");
+    fixed_valid = to_fixed_positions(fixed_valid_, valid_steps, config_.num_segments, "fixed boundaries of validation trajectory");
+  }
+  const std::vector<Batch> valid_batches = fixed_batches(valid_steps, fixed_valid, config_);
 
   const auto start_time = std::chrono::steady_clock::now();
   std::mutex report_mutex;
@@ -180,7 +235,7 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
       try {
         CompileConfig run_config = config_;
         run_config.seed = config_.seed + r;
-        runs[r] = train_run(run_config, static_cast<int>(r), train_steps, usable, valid_batches, report);
+        runs[r] = train_run(run_config, static_cast<int>(r), train_steps, fixed_train, usable, valid_batches, report);
       } catch (...) {
         errors[r] = std::current_exception();
       }

@@ -107,8 +107,11 @@ DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint
   if (n >= 2) held = std::clamp<std::size_t>(held, 1, n - 1);
   else held = 0;
   DataSplit out;
-  for (std::size_t i = 0; i < n; ++i)
-    (i < held ? out.valid : out.train).push_back(data.demos[order[i]].steps);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SkillDemo& demo = data.demos[order[i]];
+    (i < held ? out.valid : out.train).push_back(demo.steps);
+    (i < held ? out.valid_boundaries : out.train_boundaries).push_back(demo.true_boundaries);
+  }
   return out;
 }
 

@@ -40,6 +40,8 @@ SkillDataSet read_task_demos(const std::string& task, const std::filesystem::pat
 struct DataSplit {
   std::vector<StepSequence> train;
   std::vector<StepSequence> valid;
+  std::vector<std::vector<int>> train_boundaries;  // the demos' true_boundaries, parallel to train / valid
+  std::vector<std::vector<int>> valid_boundaries;
 };
 // Holds out round(valid_fraction * n) demos (at least 1 when n >= 2) chosen with `seed`.
 DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint64_t seed);

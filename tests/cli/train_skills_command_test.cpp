@@ -83,5 +83,26 @@ TEST(TrainSkillsCommand, ParkingTrialInAWritingFolderIsRefused) {
   EXPECT_NE(r.output.find("parking.json: not a writing trial"), std::string::npos) << r.output;
 }
 
+TEST(TrainSkillsCommand, FixedBoundariesMarkTheModelAsADiagnostic) {
+  const auto model = scratch_path("train_skills", "fixed.pt");
+  const auto r = run_skillcoach("train-skills --task writing --demos 6 --iterations 2 --fix-boundaries --out " +
+                                model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json s = read_json_file(model.string() + ".json");
+  EXPECT_EQ(s.at("metrics").at("fixed_boundaries"), true);
+  EXPECT_TRUE(s.at("metrics").at("valid_action_reconstruction_error").is_null());
+  EXPECT_TRUE(s.at("metrics").at("best_valid_nll").is_number());
+  EXPECT_NE(s.at("data").get<std::string>().find("DIAGNOSTIC: boundaries fixed"), std::string::npos) << s.at("data");
+}
+
+TEST(TrainSkillsCommand, FixedBoundariesNeedKnownBoundaries) {
+  const auto r = run_skillcoach("train-skills --task parking --demos 5 --iterations 1 --fix-boundaries --out " +
+                                scratch_path("train_skills", "never3.pt").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--fix-boundaries: demonstration"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("has no known boundaries"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(scratch_path("train_skills", "never3.pt")));
+}
+
 }  // namespace
 }  // namespace sc
