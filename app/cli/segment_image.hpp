@@ -8,22 +8,10 @@
 #include "engine/render/draw_types.hpp"
 #include "engine/render/rgba_image.hpp"
 #include "engine/writing/writing_trial.hpp"
+#include "app/cli/skill_colors.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
 namespace sc::cli {
-
-// The colours of one picture: the skills in order of first appearance get the colours of a list of 12 that
-// stay readable on the dark lot and on the light paper (cycling after 12 skills in one picture). A colour
-// per skill id across pictures would need 24 hues for the writing model, and some were too pale to see on
-// the paper or too close to tell apart (two greens); the legend names each segment's skill id.
-class SkillColors {
- public:
-  explicit SkillColors(const Segmentation& segmentation);
-  Color of(int skill) const;
-
- private:
-  std::vector<int> order_;  // skill ids by first appearance
-};
 
 // `segmentation` is in the trial's control steps (parking_step_sequence): step t is drawn from the path's
 // sample 3t to 3t+3 (three simulation sub-steps per control step).
