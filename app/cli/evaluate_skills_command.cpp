@@ -1,7 +1,8 @@
-// skillcoach evaluate-skills --task T --model FILE [--count N] [--seed S]: segments freshly generated expert
-// demonstrations (a seed other than the model's training seed) with the model and prints the quality
-// report (teaching/tasks/skill_quality.hpp) as JSON: writing boundary precision/recall/F1 against the
-// true character boundaries, parking skill purity, per-skill usage, and the action reconstruction error.
+// skillcoach evaluate-skills --task T (--model FILE | --time-heuristic) [--count N] [--seed S]: segments freshly
+// generated expert demonstrations (a seed other than the model's training seed) with the model, or with the
+// paper's Time Heuristic baseline as the yardstick, and prints the quality report
+// (teaching/tasks/skill_quality.hpp) as JSON: writing boundary precision/recall/F1 against the true character
+// boundaries, parking skill purity, per-skill usage, and (models only) the action reconstruction error.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -9,11 +10,15 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/cli/command_registry.hpp"
 #include "engine/core/error.hpp"
 #include "engine/writing/step_data.hpp"
+#include "teaching/skills/compile_config.hpp"
 #include "teaching/skills/compile_model.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
@@ -24,6 +29,7 @@ namespace {
 struct EvaluateArgs {
   std::string task;
   std::string model;
+  bool time_heuristic = false;
   int count = 200;
   std::optional<unsigned long long> seed;
   bool details = false;
@@ -44,26 +50,53 @@ Json demo_details(const SkillDataSet& data, const std::vector<Segmentation>& seg
   return out;
 }
 
-int run(const EvaluateArgs& args) {
-  const int state_dim = args.task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
-  const CompileModel model = CompileModel::load(args.model, args.task, state_dim, 2);
-  // Held-out data: the training data was generated from the model's own seed.
-  const std::uint64_t seed = args.seed ? *args.seed : model.config().seed + 1;
-  if (seed == model.config().seed)
-    throw InputError("--seed", std::to_string(seed) + " is the seed the model was trained with; pick another");
+SkillDataSet generate_for_evaluation(const EvaluateArgs& args, std::uint64_t seed) {
   std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
                args.task.c_str(), static_cast<unsigned long long>(seed));
-  const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
-  const std::vector<StepSequence> steps = data.steps();
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Segmentation> segmentations = model.segment(steps);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return generate_task_demos(args.task, args.count, seed);
+}
 
-  Json report = skill_quality_report(data, segmentations);
-  report["model"] = args.model;
-  report["seed"] = seed;
-  report["action_reconstruction_error"] = model.action_reconstruction_error(steps);
-  report["segmentation_seconds"] = seconds;
+template <typename Segment>
+std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<Segmentation> out = segment();
+  return {std::move(out), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
+}
+
+int run(const EvaluateArgs& args) {
+  if (args.model.empty() && !args.time_heuristic)
+    throw InputError("evaluate-skills", "give a model (--model FILE) or --time-heuristic");
+  Json report;
+  SkillDataSet data;
+  std::vector<Segmentation> segmentations;
+  if (args.time_heuristic) {
+    // The baseline has no training seed; 1 is what a model trained with the default --seed 0 is scored on.
+    const std::uint64_t seed = args.seed ? *args.seed : 1;
+    data = generate_for_evaluation(args, seed);
+    const TimeHeuristicExtractor heuristic(CompileConfig::defaults_for(args.task).num_segments);
+    auto [segs, seconds] = timed([&] { return heuristic.extract_all(data.steps()); });
+    segmentations = std::move(segs);
+    report = skill_quality_report(data, segmentations);
+    report["extractor"] = "time-heuristic (" + std::to_string(heuristic.num_skills()) + " equal segments)";
+    report["seed"] = seed;
+    report["segmentation_seconds"] = seconds;
+  } else {
+    const int state_dim = args.task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
+    const CompileModel model = CompileModel::load(args.model, args.task, state_dim, 2);
+    // Held-out data: the training data was generated from the model's own seed.
+    const std::uint64_t seed = args.seed ? *args.seed : model.config().seed + 1;
+    if (seed == model.config().seed)
+      throw InputError("--seed", std::to_string(seed) + " is the seed the model was trained with; pick another");
+    data = generate_for_evaluation(args, seed);
+    const std::vector<StepSequence> steps = data.steps();
+    auto [segs, seconds] = timed([&] { return model.segment(steps); });
+    segmentations = std::move(segs);
+    report = skill_quality_report(data, segmentations);
+    report["model"] = args.model;
+    report["seed"] = seed;
+    report["action_reconstruction_error"] = model.action_reconstruction_error(steps);
+    report["segmentation_seconds"] = seconds;
+  }
   if (args.details) report["demos"] = demo_details(data, segmentations);
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
@@ -72,7 +105,12 @@ int run(const EvaluateArgs& args) {
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<EvaluateArgs>();
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
-  sub.add_option("--model", args->model, "CompILE model file")->required();
+  auto* model = sub.add_option("--model", args->model, "CompILE model file");
+  auto* heuristic = sub.add_flag("--time-heuristic", args->time_heuristic,
+                                 "Score the paper's Time Heuristic baseline (K equal segments, K of the task's "
+                                 "defaults) instead of a model: the yardstick for a model's figures");
+  model->excludes(heuristic);
+  heuristic->excludes(model);
   sub.add_option("--count", args->count, "Demonstrations to generate")->capture_default_str()->check(CLI::Range(1, 100000));
   sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1)");
   sub.add_flag("--details", args->details,
@@ -80,7 +118,7 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"evaluate-skills", "Measure a CompILE model's segmentation quality on fresh expert data",
+const CommandRegistration kReg{{"evaluate-skills", "Measure a CompILE model's (or the time heuristic's) segmentation quality on fresh expert data",
                                 "skillcoach evaluate-skills --task writing --model assets/models/writing.pt --count 200",
                                 setup}};
 

@@ -76,5 +76,33 @@ TEST(EvaluateSkillsCommand, RefusesTheTrainingSeedAndAModelOfAnotherTask) {
   EXPECT_EQ(test::count_lines(other.output), 1) << other.output;
 }
 
+TEST(EvaluateSkillsCommand, TimeHeuristicIsScoredAsTheBaselineWithoutAModel) {
+  const auto r = run_skillcoach("evaluate-skills --task writing --count 4 --time-heuristic --details");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json d = json_of(r.output);
+  EXPECT_EQ(d.at("extractor"), "time-heuristic (8 equal segments)");
+  EXPECT_EQ(d.at("seed"), 1);
+  EXPECT_FALSE(d.contains("action_reconstruction_error"));
+  EXPECT_FALSE(d.contains("model"));
+  const Json& b = d.at("boundaries");
+  EXPECT_EQ(b.at("true_positives").get<int>() + b.at("false_negatives").get<int>(), 28);
+  for (const Json& demo : d.at("demos")) {
+    const Json& segs = demo.at("segments");
+    ASSERT_EQ(segs.size(), 8u) << demo;
+    const double share = demo.at("steps").get<double>() / 8.0;
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      EXPECT_EQ(segs[k].at(0).get<int>(), static_cast<int>(k)) << demo;  // skill id = segment index
+      EXPECT_NEAR(segs[k].at(2).get<int>() - segs[k].at(1).get<int>(), share, 1.0) << demo;
+    }
+  }
+}
+
+TEST(EvaluateSkillsCommand, NeedsAModelOrTheTimeHeuristic) {
+  const auto r = run_skillcoach("evaluate-skills --task writing --count 2");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("give a model (--model FILE) or --time-heuristic"), std::string::npos) << r.output;
+  EXPECT_EQ(test::count_lines(r.output), 1) << r.output;
+}
+
 }  // namespace
 }  // namespace sc
