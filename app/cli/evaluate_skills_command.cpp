@@ -50,12 +50,6 @@ Json demo_details(const SkillDataSet& data, const std::vector<Segmentation>& seg
   return out;
 }
 
-SkillDataSet generate_for_evaluation(const EvaluateArgs& args, std::uint64_t seed) {
-  std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
-               args.task.c_str(), static_cast<unsigned long long>(seed));
-  return generate_task_demos(args.task, args.count, seed);
-}
-
 template <typename Segment>
 std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -66,37 +60,34 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
 int run(const EvaluateArgs& args) {
   if (args.model.empty() && !args.time_heuristic)
     throw InputError("evaluate-skills", "give a model (--model FILE) or --time-heuristic");
-  Json report;
-  SkillDataSet data;
-  std::vector<Segmentation> segmentations;
-  if (args.time_heuristic) {
-    // The baseline has no training seed; 1 is what a model trained with the default --seed 0 is scored on.
-    const std::uint64_t seed = args.seed ? *args.seed : 1;
-    data = generate_for_evaluation(args, seed);
-    const TimeHeuristicExtractor heuristic(CompileConfig::defaults_for(args.task).num_segments);
-    auto [segs, seconds] = timed([&] { return heuristic.extract_all(data.steps()); });
-    segmentations = std::move(segs);
-    report = skill_quality_report(data, segmentations);
-    report["extractor"] = "time-heuristic (" + std::to_string(heuristic.num_skills()) + " equal segments)";
-    report["seed"] = seed;
-    report["segmentation_seconds"] = seconds;
-  } else {
+  std::optional<CompileModel> model;
+  // The time heuristic has no training seed; 1 is what a model trained with the default --seed 0 is scored on.
+  std::uint64_t seed = args.seed ? *args.seed : 1;
+  if (!args.time_heuristic) {
     const int state_dim = args.task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
-    const CompileModel model = CompileModel::load(args.model, args.task, state_dim, 2);
+    model.emplace(CompileModel::load(args.model, args.task, state_dim, 2));
     // Held-out data: the training data was generated from the model's own seed.
-    const std::uint64_t seed = args.seed ? *args.seed : model.config().seed + 1;
-    if (seed == model.config().seed)
+    seed = args.seed ? *args.seed : model->config().seed + 1;
+    if (seed == model->config().seed)
       throw InputError("--seed", std::to_string(seed) + " is the seed the model was trained with; pick another");
-    data = generate_for_evaluation(args, seed);
-    const std::vector<StepSequence> steps = data.steps();
-    auto [segs, seconds] = timed([&] { return model.segment(steps); });
-    segmentations = std::move(segs);
-    report = skill_quality_report(data, segmentations);
-    report["model"] = args.model;
-    report["seed"] = seed;
-    report["action_reconstruction_error"] = model.action_reconstruction_error(steps);
-    report["segmentation_seconds"] = seconds;
   }
+  std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
+               args.task.c_str(), static_cast<unsigned long long>(seed));
+  const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
+  const std::vector<StepSequence> steps = data.steps();
+  const TimeHeuristicExtractor heuristic(CompileConfig::defaults_for(args.task).num_segments);
+  const auto [segmentations, seconds] =
+      timed([&] { return model ? model->segment(steps) : heuristic.extract_all(steps); });
+
+  Json report = skill_quality_report(data, segmentations);
+  if (model) {
+    report["model"] = args.model;
+    report["action_reconstruction_error"] = model->action_reconstruction_error(steps);
+  } else {
+    report["extractor"] = "time-heuristic (" + std::to_string(heuristic.num_skills()) + " equal segments)";
+  }
+  report["seed"] = seed;
+  report["segmentation_seconds"] = seconds;
   if (args.details) report["demos"] = demo_details(data, segmentations);
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
