@@ -60,7 +60,7 @@ class CompileTrainer {
                      const ProgressCallback& progress = {});
   const TrainingSummary& summary() const { return summary_; }
 
-  // Diagnostic: the next train() fixes every boundary instead of sampling it. Entry i lists trajectory i's
+  // Diagnostic: from now on train() fixes every boundary instead of sampling it. Entry i lists trajectory i's
   // interior boundaries (action indices, strictly ascending, inside 1..T-1, at most K-1 of them; missing
   // ones fall at the end, i.e. empty last segments). Only the latent heads and the decoder then learn from
   // reconstruction (the boundary head sees only the prior), so such a model measures what CompILE's
