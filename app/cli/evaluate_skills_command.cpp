@@ -103,7 +103,7 @@ CommandRunner setup(CLI::App& sub) {
   model->excludes(heuristic);
   heuristic->excludes(model);
   sub.add_option("--count", args->count, "Demonstrations to generate")->capture_default_str()->check(CLI::Range(1, 100000));
-  sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1)");
+  sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
   sub.add_flag("--details", args->details,
                "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");
   return [args] { return run(*args); };
