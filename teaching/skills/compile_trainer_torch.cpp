@@ -43,19 +43,27 @@ namespace {
 // Boundary positions in model steps (empty when boundaries are not fixed), one list per trajectory.
 using FixedPositions = std::vector<std::vector<int>>;
 
+// The batch of data[indices[i]] (with their fixed boundaries, if any), in that order.
+Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed, const std::vector<std::size_t>& indices,
+               const CompileConfig& config) {
+  std::vector<const StepSequence*> steps;
+  std::vector<const std::vector<int>*> boundaries;
+  for (std::size_t i : indices) {
+    steps.push_back(&data[i].steps);
+    if (!fixed.empty()) boundaries.push_back(&fixed[i]);
+  }
+  return compile_detail::make_batch(steps, config, boundaries);
+}
+
 std::vector<Batch> fixed_batches(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
                                  const CompileConfig& config) {
   std::vector<Batch> out;
   const auto bs = static_cast<std::size_t>(config.batch_size);
   for (std::size_t first = 0; first < data.size(); first += bs) {
-    std::vector<const StepSequence*> chunk;
-    std::vector<const std::vector<int>*> chunk_fixed;
+    std::vector<std::size_t> chunk;
     for (std::size_t i = first; i < std::min(data.size(), first + bs); ++i)
-      if (data[i].steps.length() > 0) {
-        chunk.push_back(&data[i].steps);
-        if (!fixed.empty()) chunk_fixed.push_back(&fixed[i]);
-      }
-    if (!chunk.empty()) out.push_back(compile_detail::make_batch(chunk, config, chunk_fixed));
+      if (data[i].steps.length() > 0) chunk.push_back(i);
+    if (!chunk.empty()) out.push_back(batch_of(data, fixed, chunk, config));
   }
   return out;
 }
@@ -121,13 +129,9 @@ void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at
                     const std::vector<std::size_t>& order, TrainingProgress& p) {
   const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
   for (std::size_t first = 0; first < order.size(); first += batch_size) {
-    std::vector<const StepSequence*> chunk;
-    std::vector<const std::vector<int>*> chunk_fixed;
-    for (std::size_t i = first; i < std::min(order.size(), first + batch_size); ++i) {
-      chunk.push_back(&train_steps[order[i]].steps);
-      if (!fixed.empty()) chunk_fixed.push_back(&fixed[order[i]]);
-    }
-    const Batch batch = compile_detail::make_batch(chunk, net.config, chunk_fixed);
+    const std::vector<std::size_t> chunk(order.begin() + static_cast<std::ptrdiff_t>(first),
+                                         order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), first + batch_size)));
+    const Batch batch = batch_of(train_steps, fixed, chunk, net.config);
     const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
     optimizer.zero_grad();
     losses.total.backward();
