@@ -23,15 +23,17 @@ std::string duration(double seconds) {
 std::string describe_training_progress(const TrainingProgress& p) {
   std::string line;
   if (p.restarts > 1) line = "run " + std::to_string(p.restart + 1) + "/" + std::to_string(p.restarts) + "  ";
-  line += "it " + std::to_string(p.iteration) + "/" + std::to_string(p.iterations);
+  line += (p.warm_start ? "warm start " : "it ") + std::to_string(p.iteration) + "/" + std::to_string(p.iterations);
   line += format("  loss %.4g (nll_a %.4g", p.loss, p.nll_action);
   if (p.nll_state != 0.0) line += format(" nll_s %.4g", p.nll_state);
-  line += format(" kl_z %.3g kl_b %.3g)", p.kl_z, p.kl_b);
+  line += format(" kl_z %.3g kl_b %.3g", p.kl_z, p.kl_b);
+  line += p.warm_start ? format(" boundary_ce %.3g)", p.boundary_ce) : std::string(")");
   if (std::isfinite(p.valid_nll)) line += format("  valid %.4g", p.valid_nll) + (p.improved ? " *" : "");
   if (std::isfinite(p.best_valid_nll)) line += format("  best %.4g", p.best_valid_nll);
   line += "  " + duration(p.elapsed_seconds);
   // An upper bound: early stopping may end the run sooner.
-  const double eta = p.iteration > 0 ? p.elapsed_seconds / p.iteration * (p.iterations - p.iteration) : 0.0;
+  const double phase = p.elapsed_seconds - p.phase_start_seconds;
+  const double eta = p.iteration > 0 ? phase / p.iteration * (p.iterations - p.iteration) : 0.0;
   if (p.iteration < p.iterations) line += "  ETA " + duration(eta);
   return line;
 }

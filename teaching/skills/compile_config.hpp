@@ -45,10 +45,19 @@ struct CompileConfig {
   // Arc-length resampling before the model (0 = off). Actions are read as displacements; each model step
   // covers `resample_step` units of path length and its action is the mean unit direction over it.
   double resample_step = 0.0;
+  // Iterations of warm start before ordinary training (0 = off): every boundary is fixed at the places
+  // where the training data stop repeating (find_repeat_boundaries, no true boundaries involved) while the
+  // decoder and latent heads learn to reconstruct those segments and the boundary head learns to predict
+  // them (a cross-entropy term); then CompILE trains as usual from there. Why: from random weights the
+  // writing model settles on stroke pieces although letters score better on its own objective
+  // (docs/skills.md). Data that do not repeat exactly (parking) yield no boundaries: keep it 0 there.
+  int warm_start_iterations = 0;
+  double warm_start_learning_rate = 0.0;  // Adam's rate during the warm start (0 = learning_rate)
 
   // Paper: latent 16, K 4, Poisson 10, beta_s 1, statediff+action, lr 1e-3, batch 100 (12-D states).
   static CompileConfig parking_defaults();
-  // Paper: latent 24, K 8, action, lr 5e-3, batch 50; we resample (see compile_config.cpp).
+  // Paper: latent 24, K 8, action, lr 5e-3, batch 50; we resample, warm-start and use lr 1e-3 without the
+  // latent KL (see compile_config.cpp).
   static CompileConfig writing_defaults();
   // Task defaults by name ("parking" or "writing"); throws InputError otherwise.
   static CompileConfig defaults_for(const std::string& task);

@@ -256,6 +256,14 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
     out.kl_b = (p * (torch::log(p + kEps) - log_prior)).sum() * inv_b;
   }
   out.total = out.nll_action + cfg.beta_s * out.nll_state + cfg.beta_z * out.kl_z + cfg.beta_b * out.kl_b;
+  out.boundary_ce = torch::zeros({});
+  if (batch.supervise_boundaries && cfg.num_segments > 1) {
+    for (int k = 0; k + 1 < cfg.num_segments; ++k) {
+      const Tensor target = fixed_boundary(batch, k, batch.steps + 1);
+      out.boundary_ce = out.boundary_ce - (torch::log_softmax(enc.boundary_logits[static_cast<std::size_t>(k)], -1) * target).sum() * inv_b;
+    }
+    out.total = out.total + out.boundary_ce;
+  }
   return out;
 }
 

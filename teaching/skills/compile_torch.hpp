@@ -97,6 +97,8 @@ struct Batch {
   // Diagnostic (CompileTrainer::fix_boundaries): [B][K-1] boundary positions 1..T_b in model steps, used
   // instead of sampled boundaries; empty = boundaries are sampled as usual.
   std::vector<std::vector<int>> fixed_boundaries;
+  // Warm start: the loss also pulls the boundary head towards fixed_boundaries (cross-entropy).
+  bool supervise_boundaries = false;
 };
 // `steps[i]` must match the config's dimensions and have length >= 1. `fixed_boundaries`, when not empty,
 // is parallel to `steps`: each K-1 positions in model steps (see Batch::fixed_boundaries).
@@ -113,6 +115,7 @@ void run_decoder_feedback(const CompileNetwork& net, const Packing& packing, con
 // ---- forward pass -------------------------------------------------------------------------------------
 struct LossTerms {
   torch::Tensor total, nll_action, nll_state, kl_z, kl_b;  // scalars (mean over the batch)
+  torch::Tensor boundary_ce;  // Batch::supervise_boundaries only (else 0): -log p(fixed boundary), summed over k
 };
 struct HardReadout {
   std::vector<std::vector<int>> boundaries;  // [B][K] in model steps; the last equals the length

@@ -30,9 +30,12 @@ struct TrainingProgress {
   double nll_state = 0.0;
   double kl_z = 0.0;
   double kl_b = 0.0;
+  double boundary_ce = 0.0;  // warm start only: cross-entropy of the boundary head against the fixed boundaries
+  bool warm_start = false;   // a warm-start iteration (config.warm_start_iterations); then iteration counts those
   double valid_nll = std::numeric_limits<double>::quiet_NaN();  // NaN when not evaluated this iteration
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
   double elapsed_seconds = 0.0;
+  double phase_start_seconds = 0.0;  // elapsed_seconds when this phase (warm start or training) began: for the ETA
   bool improved = false;
 };
 
@@ -40,11 +43,14 @@ struct TrainingSummary {
   int restart = 0;                   // the run whose weights were kept (lowest validation NLL)
   std::vector<double> restart_valid_nll;  // best validation NLL of every run (NaN without a valid split)
   int iterations_run = 0;
-  int best_iteration = 0;  // iteration whose weights were kept (0 = untrained)
+  int best_iteration = 0;  // iteration whose weights were kept (0 = before the first: untrained, or as warm-started)
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
   double final_loss = std::numeric_limits<double>::quiet_NaN();
   double seconds = 0.0;
   bool stopped_early = false;
+  // Warm start (config.warm_start_iterations > 0): mean number of repetition boundaries per training trajectory.
+  double warm_start_boundaries = std::numeric_limits<double>::quiet_NaN();
+  double warm_start_valid_nll = std::numeric_limits<double>::quiet_NaN();  // of the weights the warm start left
   Json to_json() const;
 };
 

@@ -13,6 +13,7 @@
 #include "engine/core/rng.hpp"
 #include "teaching/skills/compile_torch.hpp"
 #include "teaching/skills/compile_trainer.hpp"
+#include "teaching/skills/repeat_boundaries.hpp"
 
 namespace sc {
 
@@ -26,7 +27,9 @@ Json TrainingSummary::to_json() const {
   return Json{{"restart", restart}, {"restart_valid_nll", std::move(restarts)},
               {"iterations_run", iterations_run}, {"best_iteration", best_iteration},
               {"best_valid_nll", num(best_valid_nll)}, {"final_loss", num(final_loss)},
-              {"seconds", seconds}, {"stopped_early", stopped_early}};
+              {"seconds", seconds}, {"stopped_early", stopped_early},
+              {"warm_start_boundaries", num(warm_start_boundaries)},
+              {"warm_start_valid_nll", num(warm_start_valid_nll)}};
 }
 
 CompileTrainer::CompileTrainer(CompileConfig config) : config_(std::move(config)) {}
@@ -45,14 +48,16 @@ using FixedPositions = std::vector<std::vector<int>>;
 
 // The batch of data[indices[i]] (with their fixed boundaries, if any), in that order.
 Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed, const std::vector<std::size_t>& indices,
-               const CompileConfig& config) {
+               const CompileConfig& config, bool supervise = false) {
   std::vector<const StepSequence*> steps;
   std::vector<const std::vector<int>*> boundaries;
   for (std::size_t i : indices) {
     steps.push_back(&data[i].steps);
     if (!fixed.empty()) boundaries.push_back(&fixed[i]);
   }
-  return compile_detail::make_batch(steps, config, boundaries);
+  Batch batch = compile_detail::make_batch(steps, config, boundaries);
+  batch.supervise_boundaries = supervise && !fixed.empty();
+  return batch;
 }
 
 std::vector<Batch> fixed_batches(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
@@ -124,14 +129,15 @@ struct RunResult {
 
 // One pass over the training split in its current order: an Adam step per batch; the loss terms are added
 // to `p` as means over the pass's trajectories.
+// With `supervise` (warm start) the boundary head is also trained towards the fixed boundaries.
 void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator,
                     const std::vector<ModelSteps>& train_steps, const FixedPositions& fixed,
-                    const std::vector<std::size_t>& order, TrainingProgress& p) {
+                    const std::vector<std::size_t>& order, TrainingProgress& p, bool supervise = false) {
   const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
   for (std::size_t first = 0; first < order.size(); first += batch_size) {
     const std::vector<std::size_t> chunk(order.begin() + static_cast<std::ptrdiff_t>(first),
                                          order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), first + batch_size)));
-    const Batch batch = batch_of(train_steps, fixed, chunk, net.config);
+    const Batch batch = batch_of(train_steps, fixed, chunk, net.config, supervise);
     const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
     optimizer.zero_grad();
     losses.total.backward();
@@ -142,12 +148,50 @@ void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at
     p.nll_state += losses.nll_state.item<double>() * w;
     p.kl_z += losses.kl_z.item<double>() * w;
     p.kl_b += losses.kl_b.item<double>() * w;
+    p.boundary_ce += losses.boundary_ce.item<double>() * w;
   }
 }
 
-RunResult train_run(const CompileConfig& config, int restart, const std::vector<ModelSteps>& train_steps,
-                    const FixedPositions& fixed, std::vector<std::size_t> usable, const std::vector<Batch>& valid_batches,
+// The data a run trains on: fixed boundaries (diagnostic) and the warm start's boundaries, both optional.
+struct RunData {
+  const std::vector<ModelSteps>& train_steps;
+  const FixedPositions& fixed;
+  const FixedPositions& warm;
+  const std::vector<Batch>& valid_batches;
+};
+
+// Warm start (CompileConfig::warm_start_iterations): passes with the boundaries fixed at `warm` and the
+// boundary head supervised towards them. No validation here: the best weights are chosen afterwards, by
+// the model's own boundaries.
+void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator, const RunData& data,
+                std::vector<std::size_t>& usable, Rng& shuffle_rng, int restart, const std::function<double()>& elapsed,
+                const std::function<void(TrainingProgress&)>& report) {
+  const int count = net.config.warm_start_iterations;
+  auto set_rate = [&](double rate) {
+    for (auto& group : optimizer.param_groups()) static_cast<torch::optim::AdamOptions&>(group.options()).lr(rate);
+  };
+  if (net.config.warm_start_learning_rate > 0.0) set_rate(net.config.warm_start_learning_rate);
+  for (int it = 1; it <= count; ++it) {
+    for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
+    TrainingProgress p;
+    p.restart = restart;
+    p.iteration = it;
+    p.iterations = count;
+    p.warm_start = true;
+    train_one_pass(net, optimizer, generator, data.train_steps, data.warm, usable, p, true);
+    if (!std::isfinite(p.loss))
+      throw InputError("compile training", "loss became non-finite in warm-start iteration " + std::to_string(it));
+    p.elapsed_seconds = elapsed();
+    report(p);
+  }
+  set_rate(net.config.learning_rate);
+}
+
+RunResult train_run(const CompileConfig& config, int restart, const RunData& data, std::vector<std::size_t> usable,
                     const std::function<void(TrainingProgress&)>& report) {
+  const auto& train_steps = data.train_steps;
+  const auto& fixed = data.fixed;
+  const auto& valid_batches = data.valid_batches;
   const auto start_time = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(); };
   auto generator = at::detail::createCPUGenerator(config.seed);
@@ -159,6 +203,19 @@ RunResult train_run(const CompileConfig& config, int restart, const std::vector<
   Rng shuffle_rng = Rng(config.seed).fork(0x5eed5u);
 
   std::vector<torch::Tensor> best;
+  double warm_valid_nll = std::numeric_limits<double>::quiet_NaN();
+  if (!data.warm.empty()) {
+    warm_start(net, optimizer, generator, data, usable, shuffle_rng, restart, elapsed, report);
+    // The warm-started weights are a candidate like any checkpoint (best_iteration 0): measured on the
+    // writing words, the first free iterations at the usual learning rate undo the warm start (the
+    // relaxed boundaries' Gumbel noise moves them off the letters), and early stopping must be able to
+    // say so.
+    if (!valid_batches.empty()) {
+      summary.best_valid_nll = warm_valid_nll = validation_nll(net, valid_batches);
+      for (const auto& t : params) best.push_back(t.detach().clone());
+    }
+  }
+  const double phase_start = elapsed();
   int checks_without_improvement = 0;
   for (int it = 1; it <= config.iterations; ++it) {
     for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
@@ -188,6 +245,7 @@ RunResult train_run(const CompileConfig& config, int restart, const std::vector<
     }
     p.best_valid_nll = summary.best_valid_nll;
     p.elapsed_seconds = elapsed();
+    p.phase_start_seconds = phase_start;
     report(p);
     if (checks_without_improvement >= config.patience) {
       summary.stopped_early = true;
@@ -200,6 +258,7 @@ RunResult train_run(const CompileConfig& config, int restart, const std::vector<
   } else {
     summary.best_iteration = summary.iterations_run;
   }
+  summary.warm_start_valid_nll = warm_valid_nll;
   summary.seconds = elapsed();
   return out;
 }
@@ -223,6 +282,18 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
     fixed_valid = to_fixed_positions(fixed_valid_, valid_steps, config_.num_segments, "fixed boundaries of validation trajectory");
   }
   const std::vector<Batch> valid_batches = fixed_batches(valid_steps, fixed_valid, config_);
+  FixedPositions warm;
+  double warm_count = std::numeric_limits<double>::quiet_NaN();
+  if (config_.warm_start_iterations > 0 && !fixed_) {
+    RepeatBoundaryConfig repeat;
+    repeat.max_boundaries = std::max(0, config_.num_segments - 1);
+    const auto found = find_repeat_boundaries(train, repeat);
+    warm = to_fixed_positions(found, train_steps, config_.num_segments, "warm-start boundaries of training trajectory");
+    std::size_t total = 0;
+    for (const auto& f : found) total += f.size();
+    warm_count = static_cast<double>(total) / static_cast<double>(found.size());
+  }
+  const RunData run_data{train_steps, fixed_train, warm, valid_batches};
 
   const auto start_time = std::chrono::steady_clock::now();
   std::mutex report_mutex;
@@ -239,7 +310,7 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
       try {
         CompileConfig run_config = config_;
         run_config.seed = config_.seed + r;
-        runs[r] = train_run(run_config, static_cast<int>(r), train_steps, fixed_train, usable, valid_batches, report);
+        runs[r] = train_run(run_config, static_cast<int>(r), run_data, usable, report);
       } catch (...) {
         errors[r] = std::current_exception();
       }
@@ -258,8 +329,12 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
     if (runs[r].summary.best_valid_nll < runs[kept].summary.best_valid_nll) kept = r;
   summary_ = runs[kept].summary;
   summary_.restart = static_cast<int>(kept);
+  summary_.warm_start_boundaries = warm_count;
   for (const RunResult& run : runs) summary_.restart_valid_nll.push_back(run.summary.best_valid_nll);
   summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+  // The model records the configured seed (that of the data and the split, which evaluate-skills must
+  // avoid), not the kept run's seed + restart; summary().restart says which run it was.
+  runs[kept].impl->net.config.seed = config_.seed;
   return CompileModel(std::move(runs[kept].impl));
 }
 

@@ -55,6 +55,42 @@ std::vector<PlantedSequence> constant_primitive_sequences(int count, int segment
   return out;
 }
 
+std::vector<PlantedSequence> repeated_symbol_sequences(int count, int segments, int symbol_count, int min_length,
+                                                       int max_length, std::uint64_t symbol_seed, std::uint64_t seed) {
+  // Steps are one of 16 directions; symbol i starts with direction i and ends with direction i + 8 (mod
+  // 16, so symbol_count <= 8 keeps every first and every last step distinct: each edge is visible in one
+  // step); the steps between are random.
+  Rng symbol_rng(symbol_seed);
+  auto step_of = [](std::uint64_t direction) {
+    const double angle = 2.0 * std::numbers::pi * static_cast<double>(direction % 16) / 16.0;
+    return std::pair<float, float>(static_cast<float>(0.8 * std::cos(angle)), static_cast<float>(0.8 * std::sin(angle)));
+  };
+  std::vector<std::vector<std::pair<float, float>>> symbols(static_cast<std::size_t>(symbol_count));
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    const int len = min_length + static_cast<int>(symbol_rng.below(static_cast<std::uint64_t>(max_length - min_length + 1)));
+    symbols[i].push_back(step_of(i));
+    for (int t = 1; t + 1 < len; ++t) symbols[i].push_back(step_of(symbol_rng.below(16)));
+    symbols[i].push_back(step_of(i + 8));
+  }
+  Rng rng(seed);
+  std::vector<PlantedSequence> out;
+  for (int n = 0; n < count; ++n) {
+    PlantedSequence p;
+    p.steps.action_dim = 2;
+    int previous = -1;
+    for (int s = 0; s < segments; ++s) {
+      int id;
+      do id = static_cast<int>(rng.below(static_cast<std::uint64_t>(symbol_count))); while (id == previous);
+      previous = id;
+      for (const auto& [a0, a1] : symbols[static_cast<std::size_t>(id)]) push_step(p, {}, a0, a1);
+      p.boundaries.push_back(p.steps.length());
+      p.primitives.push_back(id);
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
 std::vector<PlantedSequence> parking_like_sequences(int count, int min_length, int max_length, std::uint64_t seed) {
   Rng rng(seed);
   std::vector<PlantedSequence> out;

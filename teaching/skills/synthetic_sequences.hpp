@@ -21,6 +21,13 @@ std::vector<PlantedSequence> constant_primitive_sequences(int count, int segment
                                                           int min_length, int max_length, int state_dim,
                                                           std::uint64_t seed);
 
+// Each sequence chains `segments` symbols (never the same twice in a row) from `symbol_count` <= 8 fixed
+// symbols: a symbol is a fixed sequence of min_length..max_length (>= 2) unit steps in 16 directions, the
+// same steps wherever it occurs (as the writing expert's letters are), with a first and a last step of
+// its own. The symbols depend on `symbol_seed` only, so data drawn with other `seed`s share them.
+std::vector<PlantedSequence> repeated_symbol_sequences(int count, int segments, int symbol_count, int min_length,
+                                                       int max_length, std::uint64_t symbol_seed, std::uint64_t seed);
+
 // Parking-shaped data: 12-D states, 2-D actions in [-1, 1], lengths uniform in [min_length, max_length],
 // 2..3 piecewise-smooth manoeuvres per trajectory.
 std::vector<PlantedSequence> parking_like_sequences(int count, int min_length, int max_length, std::uint64_t seed);

@@ -81,6 +81,65 @@ ParkingPurityReport parking_skill_purity(const std::vector<Segmentation>& segmen
   return out;
 }
 
+char WritingSkillSymbols::majority() const {
+  char best = '\0';
+  int most = -1;
+  for (const auto& [symbol, n] : symbol_steps)
+    if (n > most) best = symbol, most = n;  // map order: the smaller character wins a tie
+  return best;
+}
+
+double WritingSkillSymbols::purity() const {
+  return steps > 0 ? static_cast<double>(symbol_steps.at(majority())) / steps : 0.0;
+}
+
+WritingSymbolReport writing_symbol_purity(const std::vector<Segmentation>& segmentations,
+                                          const std::vector<SkillDemo>& demos) {
+  std::map<int, WritingSkillSymbols> skills;
+  std::map<char, std::map<int, int>> by_symbol;  // symbol -> skill -> steps
+  for (std::size_t i = 0; i < demos.size() && i < segmentations.size(); ++i) {
+    const SkillDemo& d = demos[i];
+    if (d.true_boundaries.empty() || d.label.size() != d.true_boundaries.size() + 1) continue;
+    for (const SkillSegment& seg : segmentations[i].segments)
+      for (int t = std::max(0, seg.begin); t < seg.end && t < d.steps.length(); ++t) {
+        const auto index = std::upper_bound(d.true_boundaries.begin(), d.true_boundaries.end(), t) - d.true_boundaries.begin();
+        const char symbol = d.label[static_cast<std::size_t>(index)];
+        WritingSkillSymbols& s = skills[seg.skill];
+        s.skill = seg.skill;
+        ++s.steps;
+        ++s.symbol_steps[symbol];
+        ++by_symbol[symbol][seg.skill];
+      }
+  }
+  WritingSymbolReport out;
+  long total = 0;
+  for (const auto& [id, s] : skills) {
+    out.purity += s.purity() * s.steps;
+    total += s.steps;
+    out.skills.push_back(s);
+  }
+  if (total > 0) out.purity /= static_cast<double>(total);
+  for (const auto& [symbol, counts] : by_symbol) {
+    const auto best = std::max_element(counts.begin(), counts.end(),
+                                       [](const auto& a, const auto& b) { return a.second < b.second; });
+    out.symbol_skill[symbol] = best->first;  // max_element keeps the first (smallest id) on a tie
+  }
+  return out;
+}
+
+Json to_json(const WritingSymbolReport& r) {
+  Json per_skill = Json::array();
+  for (const WritingSkillSymbols& s : r.skills) {
+    Json symbols = Json::object();
+    for (const auto& [symbol, n] : s.symbol_steps) symbols[std::string(1, symbol)] = n;
+    per_skill.push_back({{"skill", s.skill}, {"steps", s.steps}, {"majority", std::string(1, s.majority())},
+                         {"purity", s.purity()}, {"symbol_steps", std::move(symbols)}});
+  }
+  Json symbol_skill = Json::object();
+  for (const auto& [symbol, skill] : r.symbol_skill) symbol_skill[std::string(1, symbol)] = skill;
+  return Json{{"purity", r.purity}, {"symbol_skill", std::move(symbol_skill)}, {"per_skill", std::move(per_skill)}};
+}
+
 Json to_json(const BoundaryScore& s) {
   return Json{{"precision", s.precision()}, {"recall", s.recall()}, {"f1", s.f1()},
               {"true_positives", s.true_positives}, {"false_positives", s.false_positives},
@@ -110,6 +169,7 @@ Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentati
   if (boundaries_known) {
     out["boundaries"] = to_json(writing_boundary_score(segmentations, data.demos));
     out["boundaries"]["tolerance"] = "+-5% of the word's length in steps";
+    out["symbols"] = to_json(writing_symbol_purity(segmentations, data.demos));
   }
   if (data.task == "parking") out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
   return out;

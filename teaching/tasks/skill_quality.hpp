@@ -4,6 +4,7 @@
 //    within +-5 % of the word's length (in steps) of a not yet matched true boundary (issue 5);
 //  * parking: skill purity - for each skill, the share of its steps that reverse vs drive forward and that
 //    steer left vs right vs straight. A skill that mixes all of them teaches nothing specific.
+#include <map>
 #include <vector>
 
 #include "engine/core/json_file.hpp"
@@ -48,12 +49,33 @@ struct ParkingPurityReport {
 ParkingPurityReport parking_skill_purity(const std::vector<Segmentation>& segmentations,
                                          const std::vector<StepSequence>& trajectories);
 
+// Writing: which symbols each skill draws. A demo's label is its word (one character per symbol) and its
+// true boundaries split it into those symbols, so every step has a true symbol. A skill drawing one
+// symbol only (purity 1) is what a drill for "the letter a" needs; one skill for several letters would
+// drill them together.
+struct WritingSkillSymbols {
+  int skill = 0;
+  int steps = 0;
+  std::map<char, int> symbol_steps;  // true symbol -> steps of this skill on it
+  char majority() const;             // the symbol with the most steps (the smaller character on a tie)
+  double purity() const;             // share of the skill's steps on its majority symbol
+};
+struct WritingSymbolReport {
+  std::vector<WritingSkillSymbols> skills;  // skills with at least one step, by id
+  double purity = 0.0;                       // step-weighted mean of the skills' purity
+  std::map<char, int> symbol_skill;          // each symbol -> the skill drawing most of its steps
+};
+// Demos without true boundaries, or whose label does not have one character per symbol, are skipped.
+WritingSymbolReport writing_symbol_purity(const std::vector<Segmentation>& segmentations,
+                                          const std::vector<SkillDemo>& demos);
+
 Json to_json(const BoundaryScore& score);
+Json to_json(const WritingSymbolReport& report);
 Json to_json(const ParkingPurityReport& report);
 
 // What evaluate-skills prints for `segmentations` (parallel to data.demos): {"task", "trajectories",
-// "steps", "usage" (skill_usage.hpp), and "boundaries" (writing, when true boundaries are known:
-// to_json(BoundaryScore) plus "tolerance") or "purity" (parking)}.
+// "steps", "usage" (skill_usage.hpp), and "boundaries" and "symbols" (writing, when true boundaries are
+// known: to_json(BoundaryScore) plus "tolerance", to_json(WritingSymbolReport)) or "purity" (parking)}.
 Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentation>& segmentations);
 
 }  // namespace sc

@@ -20,7 +20,8 @@ TEST(CompileConfig, TaskDefaultsFollowThePaper) {
   EXPECT_EQ(w.latent_size, 24);
   EXPECT_EQ(w.num_segments, 8);
   EXPECT_EQ(w.mode, CompileMode::Action);
-  EXPECT_DOUBLE_EQ(w.learning_rate, 5e-3);
+  EXPECT_DOUBLE_EQ(w.learning_rate, 1e-3);  // the paper: 5e-3 (too high on our resampled words)
+  EXPECT_GT(w.warm_start_iterations, 0);
   EXPECT_EQ(w.batch_size, 50);
   EXPECT_GT(w.resample_step, 0.0);
   EXPECT_THROW(CompileConfig::defaults_for("juggling"), InputError);
@@ -30,6 +31,8 @@ TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
   CompileConfig c = CompileConfig::parking_defaults();
   c.seed = 42;
   c.resample_step = 2.5;
+  c.warm_start_iterations = 30;
+  c.warm_start_learning_rate = 2e-3;
   const Json j = to_json(c);
   const CompileConfig back = compile_config_from_json(JsonView(j, "m.json"));
   EXPECT_EQ(to_json(back), j);
@@ -44,6 +47,18 @@ TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
   CompileConfig invalid = c;
   invalid.num_segments = 0;
   EXPECT_THROW(invalid.validate("cfg"), InputError);
+  invalid = c;
+  invalid.warm_start_iterations = -1;
+  EXPECT_THROW(invalid.validate("cfg"), InputError);
+}
+
+TEST(CompileConfig, ModelsFromBeforeTheWarmStartReadAsTrainedWithoutOne) {
+  Json j = to_json(CompileConfig::writing_defaults());
+  j.erase("warm_start_iterations");
+  j.erase("warm_start_learning_rate");
+  const CompileConfig back = compile_config_from_json(JsonView(j, "old.json"));
+  EXPECT_EQ(back.warm_start_iterations, 0);
+  EXPECT_EQ(back.warm_start_learning_rate, 0.0);
 }
 
 }  // namespace

@@ -37,6 +37,28 @@ TEST(WritingBoundaryScore, OnePredictionMatchesOneTrueBoundaryOnly) {
   EXPECT_EQ(s.false_negatives, 1);
 }
 
+TEST(WritingSymbolPurity, CountsEachSkillsStepsByTheTrueSymbolUnderThem) {
+  // "ab-": a = [0, 10), b = [10, 20), - = [20, 24). Skill 3 draws a and half of b, skill 5 the rest.
+  SkillDemo demo = word_demo(24, {10, 20});
+  demo.label = "ab-";
+  const WritingSymbolReport r = writing_symbol_purity({segments_of({{3, 15}, {5, 9}})}, {demo});
+  ASSERT_EQ(r.skills.size(), 2u);
+  EXPECT_EQ(r.skills[0].skill, 3);
+  EXPECT_EQ(r.skills[0].majority(), 'a');
+  EXPECT_DOUBLE_EQ(r.skills[0].purity(), 10.0 / 15.0);
+  EXPECT_EQ(r.skills[1].majority(), 'b');  // 5 steps of b, 4 of -
+  EXPECT_DOUBLE_EQ(r.purity, (10.0 + 5.0) / 24.0);
+  EXPECT_EQ(r.symbol_skill.at('a'), 3);
+  EXPECT_EQ(r.symbol_skill.at('b'), 3);  // 5 steps each: the smaller skill id
+  EXPECT_EQ(r.symbol_skill.at('-'), 5);
+}
+
+TEST(WritingSymbolPurity, SkipsDemosWhoseLabelIsNotOneCharacterPerSymbol) {
+  SkillDemo demo = word_demo(24, {10, 20});
+  demo.label = "trial-07.json";
+  EXPECT_TRUE(writing_symbol_purity({segments_of({{0, 24}})}, {demo}).skills.empty());
+}
+
 // A 12-D parking step sequence whose car drives with the given signed speeds (heading along +x).
 StepSequence parking_steps(const std::vector<double>& speeds, const std::vector<double>& steering) {
   StepSequence s;
