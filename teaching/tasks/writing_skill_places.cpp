@@ -15,6 +15,48 @@ std::string part_words(char symbol, CharacterPart part) {
   return kParts[static_cast<int>(part)] + std::string(1, symbol) + "'";
 }
 
+constexpr double kWholePartShare = 0.2;  // each third holds at least this share of the symbol's steps
+constexpr double kWholeSkillShare = 0.8;  // the whole symbols named cover at least this share of the skill
+
+// The symbol's steps in this skill, and whether they spread over all three thirds of it (a connector
+// has no thirds: always whole).
+bool covers_whole(const WritingSkillPlace& place, char symbol) {
+  if (writing::is_connector(symbol)) return true;
+  const int n = place.character_steps.at(symbol);
+  for (int part = 0; part < 3; ++part) {
+    const auto it = place.part_steps.find({symbol, static_cast<CharacterPart>(part)});
+    if (it == place.part_steps.end() || it->second < kWholePartShare * n) return false;
+  }
+  return true;
+}
+
+// "the letter 'b'", "the letters 't' and 'c'", "the letter 'a' and the connector '^'": the whole symbols
+// that make up most of the skill, most steps first; empty when the skill is mostly parts of symbols.
+std::string whole_symbols_words(const WritingSkillPlace& place) {
+  std::vector<std::pair<int, char>> ranked;
+  for (const auto& [symbol, n] : place.character_steps) ranked.push_back({n, symbol});
+  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first > b.first : a.second < b.second;
+  });
+  std::vector<char> letters, connectors;
+  int covered = 0;
+  for (const auto& [n, symbol] : ranked) {
+    if (covered >= kWholeSkillShare * place.steps || n < kWholePartShare * place.steps) break;
+    if (!covers_whole(place, symbol)) return {};
+    (writing::is_connector(symbol) ? connectors : letters).push_back(symbol);
+    covered += n;
+  }
+  if (covered < kWholeSkillShare * place.steps) return {};
+  auto list = [](const std::vector<char>& symbols, const std::string& one, const std::string& many) {
+    if (symbols.empty()) return std::string();
+    std::string text = "the " + (symbols.size() == 1 ? one : many) + " '" + symbols[0] + "'";
+    for (std::size_t i = 1; i < symbols.size(); ++i) text += (i + 1 == symbols.size() ? " and '" : ", '") + std::string(1, symbols[i]) + "'";
+    return text;
+  };
+  const std::string a = list(letters, "letter", "letters"), b = list(connectors, "connector", "connectors");
+  return a.empty() ? b : (b.empty() ? a : a + " and " + b);
+}
+
 }  // namespace
 
 int WordCharacters::symbol_at(int t) const {
@@ -57,6 +99,7 @@ std::vector<WritingSkillPlace> writing_skill_places(const std::vector<WordCharac
 
 std::string describe_writing_place(const WritingSkillPlace& place) {
   if (place.steps == 0) return "unused skill";
+  if (const std::string whole = whole_symbols_words(place); !whole.empty()) return whole;
   std::vector<std::pair<int, std::pair<char, CharacterPart>>> ranked;
   for (const auto& [key, n] : place.part_steps) ranked.push_back({n, key});
   // Most steps first; ties by symbol then part (deterministic).

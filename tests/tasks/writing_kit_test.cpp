@@ -67,6 +67,14 @@ TEST(WritingKit, SkillWordsNameCharactersFromTheTrueBoundaries) {
   EXPECT_EQ(describe_writing_place(places[0]), "the start of 'a'");
   EXPECT_EQ(describe_writing_place(places[1]), "the middle and end of 'a'");
   EXPECT_DOUBLE_EQ(places[2].share_of('b'), 1.0);
+  EXPECT_EQ(describe_writing_place(places[2]), "the letter 'b'");
+  // One skill for all of "a", "b" and "-": the letters first, most steps first.
+  WordCharacters three{"ab-", {0, 10, 40}, 44};
+  const auto merged = writing_skill_places({three}, {Segmentation{{{0, 0, 44}}}}, 1);
+  EXPECT_EQ(describe_writing_place(merged[0]), "the letters 'b' and 'a'");  // '-' is under 20 % of the skill
+  WordCharacters tail{"a-", {0, 10}, 20};
+  EXPECT_EQ(describe_writing_place(writing_skill_places({tail}, {Segmentation{{{0, 0, 20}}}}, 1)[0]),
+            "the letter 'a' and the connector '-'");
   EXPECT_EQ(describe_writing_place(WritingSkillPlace{}), "unused skill");
   for (int m = 0; m < 8; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
 }
