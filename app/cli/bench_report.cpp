@@ -182,6 +182,11 @@ std::string render_markdown(const BenchReport& r) {
      << "|---|---:|---:|---:|---:|---|\n";
   for (const auto& b : r.results) md << result_row(b);
   if (r.results.empty()) md << "| (no benchmark matched) | | | | | |\n";
+  // Whole trainings take minutes and are one run each, so they are timed as commands, not benchmarked here.
+  md << "\n## Complete model trainings\n\n"
+     << "Not measured by this command: a complete training takes minutes, timed once with\n"
+     << "`/usr/bin/time -v skillcoach train-skills --task parking|writing ...`. The commands and their wall times\n"
+     << "and peak memory are in `docs/skills.md` (\"Parking model\", \"Writing model\").\n";
   return md.str();
 }
 

@@ -9,6 +9,9 @@
 // With config.restarts > 1, that many runs (seeds seed, seed + 1, ...) train in parallel (one thread per
 // core, each run single-threaded) and the run with the lowest validation NLL is kept; ties go to the
 // lower seed. Without a validation split the first run is kept.
+// With config.warm_start_iterations > 0 (and boundaries not fixed), each run first trains with the boundaries
+// fixed where the training data stop repeating (find_repeat_boundaries) and the boundary head supervised
+// towards them; the weights it leaves are the first candidate for "best" (best_iteration 0).
 // Deterministic: the same config (seed) and data on the same machine give byte-identical model files,
 // whatever the thread scheduling (runs share nothing).
 #include <functional>

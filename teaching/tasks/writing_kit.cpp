@@ -76,6 +76,7 @@ WritingKit::WritingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
   }
   segment_expert_demos(demos_, *extractor_, kWritingTimeSlices);
   places_ = writing_skill_places(characters, demo_skills(demos_), extractor_->num_skills());
+  descriptions_ = describe_writing_places(places_);
   projector_ = std::make_unique<WritingDrillProjector>(std::move(steps));
 }
 
@@ -107,7 +108,7 @@ std::vector<Json> WritingKit::fresh_scenarios(int count, std::uint64_t seed, con
 
 std::string WritingKit::describe_skill(int skill) const {
   if (skill < 0 || skill >= static_cast<int>(places_.size())) return "unknown skill";
-  return describe_writing_place(places_[static_cast<std::size_t>(skill)]);
+  return descriptions_[static_cast<std::size_t>(skill)];
 }
 
 double WritingKit::time_limit_seconds(int expert_steps) const {

@@ -70,6 +70,7 @@ class WritingKit final : public TaskKit {
   std::vector<writing::WordTrajectory> golds_;
   std::vector<ExpertDemo> demos_;
   std::vector<WritingSkillPlace> places_;
+  std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills
   std::unique_ptr<WritingDrillProjector> projector_;
 };
 

@@ -1,6 +1,7 @@
 #include "teaching/tasks/writing_skill_places.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "engine/writing/alphabet.hpp"
 
@@ -118,6 +119,21 @@ std::string describe_writing_place(const WritingSkillPlace& place) {
     return std::string("the ") + kNames[a] + " and " + kNames[b] + " of '" + symbol + "'";
   }
   return part_words(symbol, part) + " and " + part_words(symbol2, part2);
+}
+
+std::vector<std::string> describe_writing_places(const std::vector<WritingSkillPlace>& places) {
+  std::vector<std::string> words;
+  for (const auto& p : places) words.push_back(describe_writing_place(p));
+  std::map<std::string, std::vector<std::size_t>> groups;  // shared words -> skills, used ones only
+  for (std::size_t i = 0; i < places.size(); ++i)
+    if (places[i].steps > 0) groups[words[i]].push_back(i);
+  for (auto& [text, skills] : groups) {
+    if (skills.size() < 2) continue;
+    std::stable_sort(skills.begin(), skills.end(), [&](std::size_t a, std::size_t b) { return places[a].steps > places[b].steps; });
+    for (std::size_t k = 0; k < skills.size(); ++k)
+      words[skills[k]] = text + ", form " + std::to_string(k + 1) + " of " + std::to_string(skills.size());
+  }
+  return words;
 }
 
 }  // namespace sc

@@ -37,5 +37,8 @@ std::vector<WritingSkillPlace> writing_skill_places(const std::vector<WordCharac
 // The most used (symbol, part), plus the second when the first covers under 60 % of the skill's steps.
 // Connectors are named as such ("the connector '-'").
 std::string describe_writing_place(const WritingSkillPlace& place);
+// The words of every skill, distinct among used skills: skills that share words get ", form k of n" added,
+// the most used first, so a learner never sees two different skills under one name.
+std::vector<std::string> describe_writing_places(const std::vector<WritingSkillPlace>& places);
 
 }  // namespace sc

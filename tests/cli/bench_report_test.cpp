@@ -106,6 +106,7 @@ TEST(BenchMarkdown, MachineInfoSettingsAndCommandArePresent) {
   EXPECT_THAT(md, HasSubstr("```\nskillcoach bench --quick\n```"));
   EXPECT_THAT(md, HasSubstr("2024-05-01 10:00 UTC"));
   EXPECT_THAT(md, HasSubstr("Settings: 3 repetitions."));
+  EXPECT_THAT(md, HasSubstr("## Complete model trainings"));  // points to docs/skills.md for whole trainings
 }
 
 TEST(BenchMarkdown, OneRowPerBenchmarkWithMedianRangeAndIqr) {

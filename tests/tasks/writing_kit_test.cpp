@@ -75,6 +75,13 @@ TEST(WritingKit, SkillWordsNameCharactersFromTheTrueBoundaries) {
   WordCharacters tail{"a-", {0, 10}, 20};
   EXPECT_EQ(describe_writing_place(writing_skill_places({tail}, {Segmentation{{{0, 0, 20}}}}, 1)[0]),
             "the letter 'a' and the connector '-'");
+  // Two skills drawing '-' (the second on more words): distinct names, the more used first; unused skills
+  // keep their words.
+  WordCharacters dashes{"-", {0}, 20};
+  const auto two = writing_skill_places({dashes, dashes, dashes}, {Segmentation{{{0, 0, 20}}}, Segmentation{{{1, 0, 20}}},
+                                                                    Segmentation{{{1, 0, 20}}}}, 3);
+  EXPECT_EQ(describe_writing_places(two),
+            (std::vector<std::string>{"the connector '-', form 2 of 2", "the connector '-', form 1 of 2", "unused skill"}));
   EXPECT_EQ(describe_writing_place(WritingSkillPlace{}), "unused skill");
   for (int m = 0; m < 8; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
 }
