@@ -121,11 +121,16 @@ double validation_nll(const CompileNetwork& net, const std::vector<Batch>& batch
 
 namespace {
 
-// One training run from `config.seed` (see CompileTrainer): its weights and summary.
+// One training run (see CompileTrainer): its weights and summary.
 struct RunResult {
   std::unique_ptr<CompileModel::Impl> impl;
   TrainingSummary summary;
 };
+
+// A fresh Fisher-Yates order of `order` (one call per pass, warm start and training alike).
+void shuffle(std::vector<std::size_t>& order, Rng& rng) {
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+}
 
 // One pass over the training split in its current order: an Adam step per batch; the loss terms are added
 // to `p` as means over the pass's trajectories.
@@ -172,7 +177,7 @@ void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Ge
   };
   if (net.config.warm_start_learning_rate > 0.0) set_rate(net.config.warm_start_learning_rate);
   for (int it = 1; it <= count; ++it) {
-    for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
+    shuffle(usable, shuffle_rng);
     TrainingProgress p;
     p.restart = restart;
     p.iteration = it;
@@ -187,20 +192,23 @@ void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Ge
   set_rate(net.config.learning_rate);
 }
 
-RunResult train_run(const CompileConfig& config, int restart, const RunData& data, std::vector<std::size_t> usable,
-                    const std::function<void(TrainingProgress&)>& report) {
+// `seed` (config.seed + restart) draws the run's initial weights, Gumbel noise and batch order; the network
+// keeps `config` as it is, so the model records the configured seed (that of the data and the split, which
+// evaluate-skills must avoid) whichever run is kept.
+RunResult train_run(const CompileConfig& config, std::uint64_t seed, int restart, const RunData& data,
+                    std::vector<std::size_t> usable, const std::function<void(TrainingProgress&)>& report) {
   const auto& train_steps = data.train_steps;
   const auto& fixed = data.fixed;
   const auto& valid_batches = data.valid_batches;
   const auto start_time = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count(); };
-  auto generator = at::detail::createCPUGenerator(config.seed);
+  auto generator = at::detail::createCPUGenerator(seed);
   RunResult out{std::make_unique<CompileModel::Impl>(CompileModel::Impl{CompileNetwork(config, generator)}), {}};
   CompileNetwork& net = out.impl->net;
   TrainingSummary& summary = out.summary;
   std::vector<torch::Tensor> params = net.parameters();
   torch::optim::Adam optimizer(params, torch::optim::AdamOptions(config.learning_rate));
-  Rng shuffle_rng = Rng(config.seed).fork(0x5eed5u);
+  Rng shuffle_rng = Rng(seed).fork(0x5eed5u);
 
   std::vector<torch::Tensor> best;
   double warm_valid_nll = std::numeric_limits<double>::quiet_NaN();
@@ -218,7 +226,7 @@ RunResult train_run(const CompileConfig& config, int restart, const RunData& dat
   const double phase_start = elapsed();
   int checks_without_improvement = 0;
   for (int it = 1; it <= config.iterations; ++it) {
-    for (std::size_t i = usable.size(); i > 1; --i) std::swap(usable[i - 1], usable[shuffle_rng.below(i)]);
+    shuffle(usable, shuffle_rng);
     TrainingProgress p;
     p.restart = restart;
     p.iteration = it;
@@ -308,9 +316,7 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   auto worker = [&] {
     for (std::size_t r; (r = next++) < runs.size();) {
       try {
-        CompileConfig run_config = config_;
-        run_config.seed = config_.seed + r;
-        runs[r] = train_run(run_config, static_cast<int>(r), run_data, usable, report);
+        runs[r] = train_run(config_, config_.seed + r, static_cast<int>(r), run_data, usable, report);
       } catch (...) {
         errors[r] = std::current_exception();
       }
@@ -332,9 +338,6 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   summary_.warm_start_boundaries = warm_count;
   for (const RunResult& run : runs) summary_.restart_valid_nll.push_back(run.summary.best_valid_nll);
   summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
-  // The model records the configured seed (that of the data and the split, which evaluate-skills must
-  // avoid), not the kept run's seed + restart; summary().restart says which run it was.
-  runs[kept].impl->net.config.seed = config_.seed;
   return CompileModel(std::move(runs[kept].impl));
 }
 

@@ -117,7 +117,7 @@ std::vector<std::vector<int>> find_repeat_boundaries(const std::vector<StepSeque
     for (std::size_t p = 1; p <= t_len; ++p)  // the context before p and what follows it (the end, at p = T)
       forward.add(h.key(p > n ? p - n : 0, p), p < t_len ? tok[p] : kEdgeToken);
     for (std::size_t p = 0; p < t_len; ++p)   // the context from p on and what precedes it
-      backward.add(h.key(p, std::min(t_len, p + n)) ^ 0x5bd1e995ULL, p > 0 ? tok[p - 1] : kEdgeToken);
+      backward.add(h.key(p, std::min(t_len, p + n)), p > 0 ? tok[p - 1] : kEdgeToken);
   }
   std::vector<std::vector<int>> out;
   for (std::size_t d = 0; d < tokens.size(); ++d) {
@@ -125,7 +125,7 @@ std::vector<std::vector<int>> find_repeat_boundaries(const std::vector<StepSeque
     std::vector<Candidate> candidates;
     for (std::size_t p = 1; p < t_len; ++p) {
       Candidate c{static_cast<int>(p), forward.count(hashes[d].key(p > n ? p - n : 0, p)),
-                  backward.count(hashes[d].key(p, std::min(t_len, p + n)) ^ 0x5bd1e995ULL)};
+                  backward.count(hashes[d].key(p, std::min(t_len, p + n)))};
       if (c.forward > 1 || c.backward > 1) candidates.push_back(c);
     }
     out.push_back(strongest(std::move(candidates), config));

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
+#include "teaching/tasks/distinct_skill_words.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -71,21 +71,18 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
 
 std::vector<std::string> describe_parking_motions(const std::vector<ParkingSkillMotion>& motions) {
   std::vector<std::string> words;
-  for (const auto& m : motions) words.push_back(describe_parking_motion(m));
-  std::map<std::string, std::vector<std::size_t>> groups;  // shared words -> skills, used ones only
-  for (std::size_t i = 0; i < motions.size(); ++i)
-    if (motions[i].steps > 0) groups[words[i]].push_back(i);
-  for (auto& [text, skills] : groups) {
-    if (skills.size() < 2) continue;
-    std::stable_sort(skills.begin(), skills.end(), [&](std::size_t a, std::size_t b) {
-      return std::abs(motions[a].mean_speed) < std::abs(motions[b].mean_speed);
-    });
-    for (std::size_t k = 0; k < skills.size(); ++k) {
-      if (skills.size() == 2) words[skills[k]] = text + (k == 0 ? ", slowly" : ", quickly");
-      else words[skills[k]] = text + ", pace " + std::to_string(k + 1) + " of " + std::to_string(skills.size());
-    }
+  std::vector<bool> used;
+  for (const auto& m : motions) {
+    words.push_back(describe_parking_motion(m));
+    used.push_back(m.steps > 0);
   }
-  return words;
+  return distinct_skill_words(
+      std::move(words), used,
+      [&](std::size_t a, std::size_t b) { return std::abs(motions[a].mean_speed) < std::abs(motions[b].mean_speed); },
+      [](const std::string& text, std::size_t k, std::size_t n) {
+        if (n == 2) return text + (k == 0 ? ", slowly" : ", quickly");
+        return text + ", pace " + std::to_string(k + 1) + " of " + std::to_string(n);
+      });
 }
 
 }  // namespace sc

@@ -7,6 +7,7 @@
 #include "engine/core/error.hpp"
 #include "teaching/skills/skill_usage.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/writing_skill_places.hpp"
 
 namespace sc {
 
@@ -95,35 +96,35 @@ double WritingSkillSymbols::purity() const {
 
 WritingSymbolReport writing_symbol_purity(const std::vector<Segmentation>& segmentations,
                                           const std::vector<SkillDemo>& demos) {
-  std::map<int, WritingSkillSymbols> skills;
-  std::map<char, std::map<int, int>> by_symbol;  // symbol -> skill -> steps
+  // The counting is the kit's (writing_skill_places): each demo is a word whose symbols start at 0 and at
+  // its true boundaries.
+  std::vector<WordCharacters> words;
+  std::vector<Segmentation> segs;
+  int num_skills = 0;
   for (std::size_t i = 0; i < demos.size() && i < segmentations.size(); ++i) {
     const SkillDemo& d = demos[i];
     if (d.true_boundaries.empty() || d.label.size() != d.true_boundaries.size() + 1) continue;
-    for (const SkillSegment& seg : segmentations[i].segments)
-      for (int t = std::max(0, seg.begin); t < seg.end && t < d.steps.length(); ++t) {
-        const auto index = std::upper_bound(d.true_boundaries.begin(), d.true_boundaries.end(), t) - d.true_boundaries.begin();
-        const char symbol = d.label[static_cast<std::size_t>(index)];
-        WritingSkillSymbols& s = skills[seg.skill];
-        s.skill = seg.skill;
-        ++s.steps;
-        ++s.symbol_steps[symbol];
-        ++by_symbol[symbol][seg.skill];
-      }
+    std::vector<int> starts{0};
+    starts.insert(starts.end(), d.true_boundaries.begin(), d.true_boundaries.end());
+    words.push_back({d.label, std::move(starts), d.steps.length()});
+    segs.push_back(segmentations[i]);
+    for (const SkillSegment& seg : segmentations[i].segments) num_skills = std::max(num_skills, seg.skill + 1);
   }
+  const std::vector<WritingSkillPlace> places = writing_skill_places(words, segs, num_skills);
   WritingSymbolReport out;
+  std::map<char, int> most;  // symbol -> steps of its skill in symbol_skill
   long total = 0;
-  for (const auto& [id, s] : skills) {
+  for (int m = 0; m < num_skills; ++m) {
+    const WritingSkillPlace& place = places[static_cast<std::size_t>(m)];
+    if (place.steps == 0) continue;
+    const WritingSkillSymbols s{m, place.steps, place.character_steps};
     out.purity += s.purity() * s.steps;
     total += s.steps;
     out.skills.push_back(s);
+    for (const auto& [symbol, n] : place.character_steps)
+      if (n > most[symbol]) most[symbol] = n, out.symbol_skill[symbol] = m;  // ids ascend: the smaller wins a tie
   }
   if (total > 0) out.purity /= static_cast<double>(total);
-  for (const auto& [symbol, counts] : by_symbol) {
-    const auto best = std::max_element(counts.begin(), counts.end(),
-                                       [](const auto& a, const auto& b) { return a.second < b.second; });
-    out.symbol_skill[symbol] = best->first;  // max_element keeps the first (smallest id) on a tie
-  }
   return out;
 }
 

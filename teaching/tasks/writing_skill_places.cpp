@@ -1,9 +1,9 @@
 #include "teaching/tasks/writing_skill_places.hpp"
 
 #include <algorithm>
-#include <map>
 
 #include "engine/writing/alphabet.hpp"
+#include "teaching/tasks/distinct_skill_words.hpp"
 
 namespace sc {
 namespace {
@@ -123,17 +123,16 @@ std::string describe_writing_place(const WritingSkillPlace& place) {
 
 std::vector<std::string> describe_writing_places(const std::vector<WritingSkillPlace>& places) {
   std::vector<std::string> words;
-  for (const auto& p : places) words.push_back(describe_writing_place(p));
-  std::map<std::string, std::vector<std::size_t>> groups;  // shared words -> skills, used ones only
-  for (std::size_t i = 0; i < places.size(); ++i)
-    if (places[i].steps > 0) groups[words[i]].push_back(i);
-  for (auto& [text, skills] : groups) {
-    if (skills.size() < 2) continue;
-    std::stable_sort(skills.begin(), skills.end(), [&](std::size_t a, std::size_t b) { return places[a].steps > places[b].steps; });
-    for (std::size_t k = 0; k < skills.size(); ++k)
-      words[skills[k]] = text + ", form " + std::to_string(k + 1) + " of " + std::to_string(skills.size());
+  std::vector<bool> used;
+  for (const auto& p : places) {
+    words.push_back(describe_writing_place(p));
+    used.push_back(p.steps > 0);
   }
-  return words;
+  return distinct_skill_words(
+      std::move(words), used, [&](std::size_t a, std::size_t b) { return places[a].steps > places[b].steps; },
+      [](const std::string& text, std::size_t k, std::size_t n) {
+        return text + ", form " + std::to_string(k + 1) + " of " + std::to_string(n);
+      });
 }
 
 }  // namespace sc
