@@ -4,6 +4,7 @@
 #include <string>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "engine/parking/parking_lot.hpp"
 #include "engine/parking/vehicle_model.hpp"
@@ -20,6 +21,21 @@ enum class LotVariant {
 std::string_view to_string(LotVariant variant);
 // Throws InputError naming `where` for anything but "classic" or "parked".
 LotVariant parse_lot_variant(std::string_view text, std::string_view where);
+
+// Which goal spots a scenario may draw. The paper's user study used only the three rightmost spots of the
+// row drawn below the start ("bottom-right": x = 18, 22, 26 m at y = +14; the reference keeps them with a
+// data filter, reference-facts §1.10) because the whole lot needs many more skills than a short session
+// can teach.
+enum class GoalRegion {
+  WholeLot,     // all 30 spots (the reference env's reset)
+  StudyCorner,  // spots 12, 13, 14
+};
+
+std::string_view to_string(GoalRegion region);  // "whole-lot", "study-corner"
+// Throws InputError naming `where` for anything but "whole-lot" or "study-corner".
+GoalRegion parse_goal_region(std::string_view text, std::string_view where);
+// The spots of the region, ascending.
+std::vector<int> goal_spots(GoalRegion region);
 
 struct ParkingScenario {
   double heading0 = 0.0;  // initial heading (rad); the car starts at (0, 0) at rest
@@ -42,9 +58,11 @@ Pose goal_pose(const ParkingScenario& scenario);
 // The obstacles of the scenario's lot (empty for the classic lot).
 ParkingLayout make_layout(const ParkingScenario& scenario);
 
-// Draws a scenario like the reference's reset(): heading0 = 2*pi*U[0,1), goal spot uniform over the 30
-// spots; then an obstacle seed, and reverse_in with the given probability (0 = the paper's task).
-// Always consumes the same number of values, so the variant does not change the headings and goals.
-ParkingScenario sample_parking_scenario(Rng& rng, LotVariant variant, double reverse_in_probability = 0.0);
+// Draws a scenario like the reference's reset(): heading0 = 2*pi*U[0,1), goal spot uniform over the
+// region's spots (the whole lot: all 30); then an obstacle seed, and reverse_in with the given probability
+// (0 = the paper's task). Always consumes the same number of values, so neither the variant nor the region
+// changes the other draws.
+ParkingScenario sample_parking_scenario(Rng& rng, LotVariant variant, double reverse_in_probability = 0.0,
+                                        GoalRegion region = GoalRegion::WholeLot);
 
 }  // namespace sc

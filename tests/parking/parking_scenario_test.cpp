@@ -60,6 +60,33 @@ TEST(ParkingScenario, VariantDoesNotChangeHeadingsAndGoals) {
   }
 }
 
+TEST(ParkingScenario, StudyCornerDrawsOnlyTheThreeBottomRightSpotsAndKeepsTheOtherDraws) {
+  EXPECT_EQ(goal_spots(GoalRegion::StudyCorner), (std::vector<int>{12, 13, 14}));
+  EXPECT_EQ(goal_spots(GoalRegion::WholeLot).size(), 30u);
+  for (int spot : goal_spots(GoalRegion::StudyCorner)) {
+    EXPECT_GE(spot_pose(spot).x, 18.0);
+    EXPECT_EQ(spot_pose(spot).y, 14.0);  // the row drawn below the start
+  }
+  Rng a(11), b(11);
+  int seen[3] = {0, 0, 0};
+  for (int i = 0; i < 300; ++i) {
+    const ParkingScenario whole = sample_parking_scenario(a, LotVariant::Classic);
+    const ParkingScenario corner = sample_parking_scenario(b, LotVariant::Classic, 0.0, GoalRegion::StudyCorner);
+    ASSERT_GE(corner.goal_spot, 12);
+    ASSERT_LE(corner.goal_spot, 14);
+    ++seen[corner.goal_spot - 12];
+    EXPECT_EQ(corner.heading0, whole.heading0);
+    EXPECT_EQ(corner.obstacle_seed, whole.obstacle_seed);
+  }
+  for (int n : seen) EXPECT_GT(n, 60);
+}
+
+TEST(ParkingScenario, GoalRegionNamesRoundTripAndBadNamesAreInputErrors) {
+  for (GoalRegion r : {GoalRegion::WholeLot, GoalRegion::StudyCorner})
+    EXPECT_EQ(parse_goal_region(to_string(r), "test"), r);
+  EXPECT_THROW(parse_goal_region("bottom-right", "test"), InputError);
+}
+
 TEST(ParkingScenario, ReverseInProbability) {
   Rng rng(3);
   int reversed = 0;
