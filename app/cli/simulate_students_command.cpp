@@ -1,6 +1,7 @@
-// skillcoach simulate-students [--seed S] [--out-dir DIR] [--quick]: the paper's synthetic-student experiment
-// (teaching/students/student_experiment.hpp) on the parking kit. Prints the table, writes DIR/students.json
-// (every number) and DIR/students.png (bar chart of mean reward and success rate, ± s.e. over the sets).
+// skillcoach simulate-students [--seed S] [--out-dir DIR] [--quick] ...: the paper's synthetic-student
+// experiment (teaching/students/student_experiment.hpp) on the parking kit. Prints the table, writes
+// DIR/students.json (every number), DIR/students.png (bar chart of mean reward and success rate, ± s.e. over
+// the sets) and DIR/students_curve.png (the appendix learning curve).
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
@@ -13,7 +14,10 @@
 #include "app/cli/command_registry.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/render/bar_chart_image.hpp"
+#include "engine/render/line_chart_image.hpp"
 #include "teaching/students/student_report.hpp"
+#include "teaching/students/expert_drives.hpp"
+#include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 
 namespace sc::cli {
@@ -25,6 +29,11 @@ struct SimulateArgs {
   std::string model;
   int pairs = 0;
   double rehearsal = 0.0;
+  int finetune_epochs = 0;       // 0: the config's
+  double finetune_lr = 0.0;      // 0: the config's
+  int student_drives = 0;        // 0: the config's
+  bool study_corner = false;
+  bool no_curve = false;
   bool quick = false;
 };
 
@@ -75,12 +84,61 @@ BarChartFigure chart_of(const StudentExperimentResult& result) {
   return figure;
 }
 
-int run(const SimulateArgs& args) {
+std::string format_g(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+
+LineChartFigure curve_chart_of(const StudentExperimentResult& result) {
+  const LearningCurve& curve = *result.curve;
+  LineChartFigure figure;
+  figure.title = "Reversing-difficulty student fine-tuned on a fixed set of 3 Ind. Drills";
+  figure.x_label = "fine-tuning epochs";
+  LineSeries reward{"reversing-difficulty student", Color::hex(0xe0833a), {}, {}}, success = reward;
+  for (const LearningCurvePoint& p : curve.points) {
+    reward.x.push_back(p.epochs);
+    reward.y.push_back(p.score.mean_reward);
+    success.x.push_back(p.epochs);
+    success.y.push_back(100.0 * p.score.success_rate);
+  }
+  const Color expert = Color::hex(0x3a8f5c);
+  figure.panels = {{"episode reward (last step), mean of " + std::to_string(result.config.curve.rollouts) + " rollouts", "%.3f",
+                    {reward}, {{"expert planner", expert, curve.expert.mean_reward}}},
+                   {"success rate (%)", "%.0f", {success}, {{"expert planner", expert, 100.0 * curve.expert.success_rate}}}};
+  figure.notes.push_back("seed " + std::to_string(result.config.seed) + "; drills: " + std::to_string(curve.drill_pairs) +
+                         " pairs (" + std::to_string(curve.reverse_pairs) + " reversing)" +
+                         (curve.rehearsal_pairs > 0 ? " + " + std::to_string(curve.rehearsal_pairs) + " of its own pairs" : "") +
+                         "; lr " + format_g(result.config.finetune_learning_rate) + "; goals: " +
+                         std::string(to_string(result.config.region)));
+  return figure;
+}
+
+// The kit whose pool supplies diagnosis scenarios and drills: the shipped whole-lot pool, or 100 expert
+// drives with goals in the study corner (planned here, ~3 s; seed 0 like the shipped pool).
+std::unique_ptr<TaskKit> experiment_kit(const SimulateArgs& args) {
+  if (!args.study_corner) return make_task_kit("parking", args.model);
+  ChosenExtractor chosen = choose_skill_extractor("parking", args.model);
+  return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice, plan_expert_drives(100, 0, GoalRegion::StudyCorner));
+}
+
+StudentExperimentConfig config_of(const SimulateArgs& args) {
   StudentExperimentConfig config = args.quick ? StudentExperimentConfig::quick() : StudentExperimentConfig::paper();
   config.seed = args.seed;
   config.finetune_pairs = args.pairs;
   config.finetune_rehearsal = args.rehearsal;
-  const std::unique_ptr<TaskKit> kit = make_task_kit("parking", args.model);
+  if (args.finetune_epochs > 0) config.finetune_epochs = args.finetune_epochs;
+  if (args.finetune_lr > 0) config.finetune_learning_rate = args.finetune_lr;
+  if (args.student_drives > 0) config.student_drives = args.student_drives;
+  if (args.study_corner) config.region = GoalRegion::StudyCorner;
+  config.learning_curve = !args.no_curve;
+  return config;
+}
+
+int run(const SimulateArgs& args) {
+  const StudentExperimentConfig config = config_of(args);
+  config.validate();
+  const std::unique_ptr<TaskKit> kit = experiment_kit(args);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const StudentExperimentResult result = run_student_experiment(*kit, config, progress_printer());
   std::printf("%s", student_experiment_table(result, *kit).c_str());
@@ -91,7 +149,12 @@ int run(const SimulateArgs& args) {
   const BarChartFigure figure = chart_of(result);
   auto context = create_offscreen_context_from_env(figure.width, figure.height);
   write_png(dir / "students.png", render_bar_chart_figure(*context, figure));
-  std::printf("\nwrote %s and %s\n", (dir / "students.json").string().c_str(), (dir / "students.png").string().c_str());
+  std::printf("\nwrote %s, %s", (dir / "students.json").string().c_str(), (dir / "students.png").string().c_str());
+  if (result.curve) {
+    write_png(dir / "students_curve.png", render_line_chart_figure(*context, curve_chart_of(result)));
+    std::printf(", %s", (dir / "students_curve.png").string().c_str());
+  }
+  std::printf("\n");
   return 0;
 }
 
@@ -105,6 +168,16 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--rehearsal", args->rehearsal,
                  "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
       ->check(CLI::Range(0.0, 100.0));
+  sub.add_option("--finetune-epochs", args->finetune_epochs, "Fine-tuning epochs (default 100, the paper)")
+      ->check(CLI::Range(1, 100000));
+  sub.add_option("--finetune-lr", args->finetune_lr, "Fine-tuning learning rate (default 5e-4, the students' own)")
+      ->check(CLI::Range(1e-7, 1.0));
+  sub.add_option("--student-drives", args->student_drives,
+                 "Expert drives the students are cloned on, apart from the teaching pool (default 1000)")
+      ->check(CLI::Range(1, 100000));
+  sub.add_flag("--study-corner", args->study_corner,
+               "The paper's study subset: pool and evaluation goals in the bottom-right corner (spots 12-14)");
+  sub.add_flag("--no-curve", args->no_curve, "Skip the appendix learning curve (students_curve.png)");
   sub.add_flag("--quick", args->quick, "Tiny students, few sets: checks the pipeline in seconds, concludes nothing");
   return [args] { return run(*args); };
 }

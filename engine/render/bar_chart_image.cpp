@@ -1,25 +1,15 @@
 #include "engine/render/bar_chart_image.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
-#include "engine/render/imgui_layer.hpp"
-#include "engine/render/renderer2d.hpp"
+#include "engine/render/chart_painter.hpp"
 
 namespace sc {
 namespace {
 
-const Color kBackground = Color::hex(0xffffff);
-const Color kAxis = Color::hex(0x3a3f47);
-const Color kGrid = Color::hex(0xe3e6ea);
-const ImU32 kText = IM_COL32(30, 33, 38, 255);
-const ImU32 kMuted = IM_COL32(95, 102, 112, 255);
-
-struct Range {
-  double lo = 0.0, hi = 1.0;
-};
+using namespace chart;
 
 // Covers zero and every bar with its error bar, padded so labels at the bar ends stay inside.
 Range value_range(const BarChartPanel& panel) {
@@ -38,63 +28,7 @@ Range value_range(const BarChartPanel& panel) {
   return r;
 }
 
-// 1, 2 or 5 times a power of ten, giving about five ticks.
-double tick_step(const Range& r) {
-  const double raw = (r.hi - r.lo) / 5.0;
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0})
-    if (m * power >= raw) return m * power;
-  return 10.0 * power;
-}
-
-std::string printf_value(const std::string& fmt, double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, fmt.c_str(), v);
-  return text;
-}
-
-void text_centered(ImDrawList* dl, ImFont* font, float size, ImVec2 center, ImU32 color, const std::string& text) {
-  const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
-  dl->AddText(font, size, {center.x - extent.x / 2, center.y - extent.y / 2}, color, text.c_str());
-}
-
-struct PanelBox {
-  float left, top, right, bottom;  // the plot area in pixels
-};
-
-struct Painter {
-  Renderer2D& renderer;
-  const ImGuiLayer& imgui;
-  ImDrawList* dl;
-  float s;  // ImGui scale
-
-  float y_of(const Range& r, const PanelBox& box, double v) const {
-    return box.bottom - static_cast<float>((v - r.lo) / (r.hi - r.lo)) * (box.bottom - box.top);
-  }
-
-  void rect(float x0, float y0, float x1, float y1, Color color) {
-    renderer.fill_rect({{(x0 + x1) / 2, (y0 + y1) / 2}, {std::fabs(x1 - x0) / 2, std::fabs(y1 - y0) / 2}}, color);
-  }
-  void line(Vec2f a, Vec2f b, float width, Color color) {
-    const Vec2f points[] = {a, b};
-    renderer.polyline(points, Stroke::pixels(width), color);
-  }
-
-  void axes(const BarChartPanel& panel, const Range& r, const PanelBox& box) {
-    const double step = tick_step(r);
-    ImFont* font = imgui.fonts().body;
-    const float size = 15.0f * s;
-    for (double v = std::ceil(r.lo / step) * step; v <= r.hi + 1e-12; v += step) {
-      const float y = y_of(r, box, v);
-      line({box.left, y}, {box.right, y}, 1.0f, std::fabs(v) < step * 1e-6 ? kAxis : kGrid);
-      const std::string label = printf_value(step < 0.01 ? "%.3f" : step < 0.1 ? "%.2f" : "%.1f", std::fabs(v) < step * 1e-6 ? 0.0 : v);
-      const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, label.c_str());
-      dl->AddText(font, size, {box.left - extent.x - 8 * s, y - extent.y / 2}, kMuted, label.c_str());
-    }
-    line({box.left, box.top}, {box.left, box.bottom}, 1.5f, kAxis);
-    text_centered(dl, imgui.fonts().bold, 20.0f * s, {(box.left + box.right) / 2, box.top - 28 * s}, kText, panel.title);
-  }
-
+struct BarPainter : Painter {
   void bars(const BarChartPanel& panel, const std::vector<BarSeries>& series, const Range& r, const PanelBox& box) {
     const float group_width = (box.right - box.left) / static_cast<float>(std::max<std::size_t>(panel.groups.size(), 1));
     const float bar_width = 0.8f * group_width / static_cast<float>(std::max<std::size_t>(series.size(), 1));
@@ -123,19 +57,6 @@ struct Painter {
                     kText, group.label);
     }
   }
-
-  void legend(const std::vector<BarSeries>& series, float y, float width) {
-    ImFont* font = imgui.fonts().body;
-    const float size = 16.0f * s, swatch = 14.0f * s, gap = 28.0f * s;
-    float total = 0.0f;
-    for (const BarSeries& b : series) total += swatch + 6 * s + font->CalcTextSizeA(size, FLT_MAX, 0.0f, b.label.c_str()).x + gap;
-    float x = (width - total + gap) / 2;
-    for (const BarSeries& b : series) {
-      rect(x, y - swatch / 2, x + swatch, y + swatch / 2, b.color);
-      dl->AddText(font, size, {x + swatch + 6 * s, y - size * 0.6f}, kText, b.label.c_str());
-      x += swatch + 6 * s + font->CalcTextSizeA(size, FLT_MAX, 0.0f, b.label.c_str()).x + gap;
-    }
-  }
 };
 
 }  // namespace
@@ -147,10 +68,12 @@ RgbaImage render_bar_chart_figure(GlContext& context, const BarChartFigure& figu
   ImGuiLayer imgui(context);
   renderer.begin_frame(kBackground);
   imgui.begin_frame(1.0 / 60.0);
-  Painter p{renderer, imgui, ImGui::GetBackgroundDrawList(), imgui.scale()};
+  BarPainter p{{renderer, imgui, ImGui::GetBackgroundDrawList(), imgui.scale()}};
   const float w = static_cast<float>(figure.width), h = static_cast<float>(figure.height), s = p.s;
   text_centered(p.dl, imgui.fonts().heading, 24.0f * s, {w / 2, 26 * s}, kText, figure.title);
-  p.legend(figure.series, 62 * s, w);
+  std::vector<LegendEntry> legend;
+  for (const BarSeries& b : figure.series) legend.push_back({b.label, b.color});
+  p.legend(legend, 62 * s, w);
   const float notes_height = static_cast<float>(figure.notes.size()) * 20.0f * s;
   const float panel_width = w / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
   for (std::size_t i = 0; i < figure.panels.size(); ++i) {
@@ -158,7 +81,7 @@ RgbaImage render_bar_chart_figure(GlContext& context, const BarChartFigure& figu
     const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 24 * s,
                        h - 56 * s - notes_height};
     const Range range = value_range(panel);
-    p.axes(panel, range, box);
+    p.value_axis(panel.title, range, box);
     p.bars(panel, figure.series, range, box);
   }
   for (std::size_t i = 0; i < figure.notes.size(); ++i)

@@ -2,6 +2,7 @@
 // A behaviour-cloned policy: the paper's synthetic students (appendix) are 4-layer MLPs trained on
 // goal-conditioned (state, action) pairs of the expert. Torch lives behind the pimpl (bc_policy_torch.cpp).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -12,6 +13,8 @@ struct BcTrainingConfig {
   double learning_rate = 5e-4;  // paper appendix
   int batch_size = 256;         // paper appendix
   std::uint64_t seed = 0;
+  // Called after every epoch with the epoch count so far and that epoch's mean loss (learning curves).
+  std::function<void(int epoch, double loss)> after_epoch;
 };
 
 // Flat training pairs: states N x state_dim, actions N x action_dim (row-major).

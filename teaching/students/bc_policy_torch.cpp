@@ -89,6 +89,11 @@ double BcPolicy::train(const BcDataset& data, const BcTrainingConfig& config) {
       total += loss.item<double>() * count;
     }
     epoch_loss = total / n;
+    if (config.after_epoch) {
+      impl_->net->eval();
+      config.after_epoch(epoch + 1, epoch_loss);
+      impl_->net->train();
+    }
   }
   impl_->net->eval();
   return epoch_loss;

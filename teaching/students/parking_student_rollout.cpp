@@ -31,15 +31,24 @@ double parking_episode_score(const ParkingTrial& trial) {
   return std::min(trial.rewards.back(), 0.0);
 }
 
+double parking_mean_step_reward(const ParkingTrial& trial) {
+  if (trial.rewards.empty()) return parking_episode_score(trial);
+  double total = 0.0;
+  for (double r : trial.rewards) total += r;
+  return total / static_cast<double>(trial.rewards.size());
+}
+
 ParkingScore score_parking_student(const BcPolicy& policy, const std::vector<ParkingScenario>& scenarios) {
   ParkingScore score;
   if (scenarios.empty()) return score;
   for (const ParkingScenario& s : scenarios) {
     const ParkingTrial t = rollout_parking_student(policy, s);
     score.mean_reward += parking_episode_score(t);
+    score.step_reward += parking_mean_step_reward(t);
     score.success_rate += t.success.value_or(false) ? 1.0 : 0.0;
   }
   score.mean_reward /= static_cast<double>(scenarios.size());
+  score.step_reward /= static_cast<double>(scenarios.size());
   score.success_rate /= static_cast<double>(scenarios.size());
   return score;
 }

@@ -24,8 +24,11 @@ struct ConditionComparison {
   int student = 0;  // index into result.students
   StudyCondition a = StudyCondition::IndDrills;
   StudyCondition b = StudyCondition::FullTrajectory;
-  double mean_difference = 0.0;  // mean over sets of reward(a) - reward(b)
+  double mean_difference = 0.0;  // mean over sets of reward(a) - reward(b) (last-step reward)
   WilcoxonResult test;
+  double step_difference = 0.0;  // the same for the mean per-step reward
+  WilcoxonResult step_test;
+  double success_difference = 0.0;  // mean over sets of success(a) - success(b)
 };
 std::vector<ConditionComparison> compare_conditions(const StudentExperimentResult& result);
 

@@ -5,20 +5,28 @@
 namespace sc {
 
 std::string_view student_name(SyntheticStudentKind kind) {
-  return kind == SyntheticStudentKind::HalfTrained ? "half-trained" : "reversing difficulty";
+  switch (kind) {
+    case SyntheticStudentKind::HalfTrained: return "half-trained";
+    case SyntheticStudentKind::ReversingDifficulty: return "reversing difficulty";
+    case SyntheticStudentKind::FullyTrained: break;
+  }
+  return "fully trained";
 }
 
 std::string_view student_key(SyntheticStudentKind kind) {
-  return kind == SyntheticStudentKind::HalfTrained ? "half-trained" : "reversing-difficulty";
+  switch (kind) {
+    case SyntheticStudentKind::HalfTrained: return "half-trained";
+    case SyntheticStudentKind::ReversingDifficulty: return "reversing-difficulty";
+    case SyntheticStudentKind::FullyTrained: break;
+  }
+  return "fully-trained";
 }
 
 SyntheticStudentRecipe SyntheticStudentRecipe::paper(SyntheticStudentKind kind) {
   SyntheticStudentRecipe r;
   r.kind = kind;
-  if (kind == SyntheticStudentKind::ReversingDifficulty) {
-    r.epochs = 400;
-    r.reverse_keep_fraction = 0.2;
-  }
+  if (kind != SyntheticStudentKind::HalfTrained) r.epochs = 400;
+  if (kind == SyntheticStudentKind::ReversingDifficulty) r.reverse_keep_fraction = 0.2;
   return r;
 }
 

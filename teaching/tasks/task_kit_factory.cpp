@@ -8,14 +8,7 @@
 #include "teaching/tasks/writing_kit.hpp"
 
 namespace sc {
-namespace {
-
-struct ChosenExtractor {
-  std::shared_ptr<const SkillExtractor> extractor;
-  std::string notice;  // why the time heuristic is used; empty for the trained model
-};
-
-ChosenExtractor choose_extractor(const std::string& task, const std::filesystem::path& model) {
+ChosenExtractor choose_skill_extractor(const std::string& task, const std::filesystem::path& model) {
   if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), ""};
   const int slices = task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
   const std::string relative = "assets/models/" + task + ".pt";
@@ -31,11 +24,9 @@ ChosenExtractor choose_extractor(const std::string& task, const std::filesystem:
   }
 }
 
-}  // namespace
-
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model) {
   if (task != "parking" && task != "writing") throw InputError("task", "'" + task + "' is not parking or writing");
-  ChosenExtractor chosen = choose_extractor(task, model);
+  ChosenExtractor chosen = choose_skill_extractor(task, model);
   if (task == "parking")
     return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice,
                                         ParkingKitOptions{default_parking_pool_file(), {}});

@@ -10,6 +10,15 @@
 
 namespace sc {
 
+struct ChosenExtractor {
+  std::shared_ptr<const SkillExtractor> extractor;
+  std::string notice;  // why the time heuristic is used; empty for the trained model
+};
+
+// The extractor make_task_kit gives the task's kit (same rules), for tools that build a kit of their own
+// (e.g. the synthetic students' study-corner pool).
+ChosenExtractor choose_skill_extractor(const std::string& task, const std::filesystem::path& model = {});
+
 // task: "parking" or "writing" (InputError otherwise, or when the task's data is missing). A non-empty
 // `model` must load (the user asked for it: its InputError propagates); an empty one means the shipped model.
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model = {});

@@ -39,6 +39,16 @@ TEST(ParkingStudentRollout, ScoreAveragesEpisodes) {
                            parking_episode_score(rollout_parking_student(policy, scenarios[1]))) / 2.0;
   EXPECT_DOUBLE_EQ(score.mean_reward, expected);
   EXPECT_LE(score.mean_reward, 0.0);
+  const double steps = (parking_mean_step_reward(rollout_parking_student(policy, scenarios[0])) +
+                        parking_mean_step_reward(rollout_parking_student(policy, scenarios[1]))) / 2.0;
+  EXPECT_DOUBLE_EQ(score.step_reward, steps);
+}
+
+TEST(ParkingStudentRollout, MeanStepRewardAveragesEveryStep) {
+  ParkingTrial t;
+  t.rewards = {-0.5, -0.25, -0.15};
+  EXPECT_DOUBLE_EQ(parking_mean_step_reward(t), -0.3);
+  EXPECT_DOUBLE_EQ(parking_episode_score(t), -0.15);
 }
 
 }  // namespace

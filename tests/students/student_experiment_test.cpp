@@ -1,5 +1,5 @@
 // The synthetic-student protocol end to end on a small parking kit (16 expert demos, time-heuristic skills,
-// tiny networks and epochs): seconds, not minutes. Checks determinism and the protocol's invariants, not
+// 12 student drives, tiny networks and epochs): seconds, not minutes. Checks determinism and the protocol's invariants, not
 // the paper's findings (docs/students.md has the full run).
 #include "teaching/students/student_experiment.hpp"
 
@@ -30,6 +30,12 @@ StudentExperimentConfig tiny_config(std::uint64_t seed) {
     r.epochs = r.kind == SyntheticStudentKind::HalfTrained ? 2 : 4;
     r.hidden = 32;
   }
+  c.reference.epochs = 4;
+  c.reference.hidden = 32;
+  c.student_drives = 12;
+  c.heldout_drives = 4;
+  c.curve.checkpoints = {0, 2, 3};
+  c.curve.rollouts = 3;
   c.seed = seed;
   c.diagnosis_scenarios = 4;
   c.finetune_epochs = 2;
@@ -51,6 +57,10 @@ TEST(StudentExperiment, PaperConfigurationMatchesTheAppendix) {
   EXPECT_EQ(c.num_targets, 3);
   EXPECT_EQ(c.finetune_epochs, 100);
   EXPECT_EQ(c.evaluation_sets, 15);
+  EXPECT_EQ(c.reference.kind, SyntheticStudentKind::FullyTrained);
+  EXPECT_EQ(c.reference.epochs, 400);
+  EXPECT_EQ(c.reference.reverse_keep_fraction, 1.0);
+  EXPECT_EQ(c.curve.rollouts, 100);  // the appendix: "average reward over 100 random rollouts"
 }
 
 TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
@@ -62,6 +72,10 @@ TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
     EXPECT_FALSE(s.diagnosis.targets.empty());
     EXPECT_LE(s.diagnosis.targets.size(), 3u);
     EXPECT_EQ(s.before_reward.size(), 3u);
+    EXPECT_EQ(s.before_step_reward.size(), 3u);
+    EXPECT_GT(s.heldout_mse.all, 0.0);
+    EXPECT_GT(s.heldout_mse.reverse, 0.0);
+    EXPECT_GT(s.heldout_mse.forward, 0.0);
     ASSERT_EQ(s.conditions.size(), 3u);
     for (int k = 0; k < 3; ++k) {
       const int pairs = s.conditions[0].pairs[static_cast<std::size_t>(k)];
@@ -80,7 +94,34 @@ TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
   EXPECT_EQ(half.reverse_pairs_kept, half.reverse_pairs_total);
   ASSERT_GT(reversing.reverse_pairs_total, 10);
   EXPECT_EQ(reversing.reverse_pairs_kept, std::lround(0.2 * reversing.reverse_pairs_total));
-  EXPECT_EQ(reversing.training_pairs, r.expert_pairs - (reversing.reverse_pairs_total - reversing.reverse_pairs_kept));
+  // Students learn from their own drives, not from the teaching pool.
+  EXPECT_EQ(half.training_pairs, r.student_pairs);
+  EXPECT_NE(r.student_pairs, r.expert_pairs);
+  EXPECT_EQ(reversing.training_pairs, r.student_pairs - (reversing.reverse_pairs_total - reversing.reverse_pairs_kept));
+  // The fully trained yardstick is measured and diagnosed but not fine-tuned.
+  EXPECT_EQ(r.reference.recipe.kind, SyntheticStudentKind::FullyTrained);
+  EXPECT_TRUE(r.reference.conditions.empty());
+  EXPECT_EQ(r.reference.before_reward.size(), 3u);
+  EXPECT_EQ(r.heldout_pairs > 0, true);
+  EXPECT_GT(r.expert_heldout.success_rate, 0.5);
+  // The appendix curve: one point per checkpoint, the expert's level on the same scenarios.
+  ASSERT_TRUE(r.curve.has_value());
+  ASSERT_EQ(r.curve->points.size(), 3u);
+  EXPECT_EQ(r.curve->points[2].epochs, 3);
+  EXPECT_GT(r.curve->drill_pairs, 0);
+  EXPECT_LE(r.curve->expert.mean_reward, 0.0);
+}
+
+TEST(StudentExperiment, StudyCornerEvaluatesOnlyOnTheCornerGoals) {
+  StudentExperimentConfig c = tiny_config(2);
+  c.region = GoalRegion::StudyCorner;
+  c.learning_curve = false;
+  c.students.resize(1);
+  const StudentExperimentResult r = run_student_experiment(small_kit(), c);
+  EXPECT_FALSE(r.curve.has_value());
+  EXPECT_EQ(student_experiment_json(r, small_kit()).at("config").at("region"), "study-corner");
+  ASSERT_EQ(r.students.size(), 1u);
+  EXPECT_EQ(r.students[0].conditions[0].reward.size(), 3u);
 }
 
 TEST(StudentExperiment, RehearsalAddsTheStudentsOwnPairsEquallyToEveryCondition) {
