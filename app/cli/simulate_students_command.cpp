@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -61,9 +62,16 @@ BarChartFigure chart_of(const StudentExperimentResult& result) {
                    {std::string(condition_name(StudyCondition::IndDrills)), Color::hex(0xe0833a)}};
   BarChartPanel reward{"episode reward (last step, higher is better)", "%.3f", {}};
   BarChartPanel success{"success rate (%)", "%.0f", {}};
-  for (const StudentResult& s : result.students) {
+  auto group = [&](const StudentResult& s) {
     BarGroup r{std::string(student_name(s.recipe.kind)), {}, {}}, p = r;
     auto add = [&](const std::vector<double>& rewards, const std::vector<double>& successes) {
+      if (rewards.empty()) {  // the fully trained yardstick is not fine-tuned: no bar
+        for (BarGroup* g : {&r, &p}) {
+          g->values.push_back(std::nan(""));
+          g->errors.push_back(0.0);
+        }
+        return;
+      }
       const MeanAndError mr = mean_and_standard_error(rewards), ms = mean_and_standard_error(successes);
       r.values.push_back(mr.mean);
       r.errors.push_back(mr.standard_error);
@@ -71,11 +79,15 @@ BarChartFigure chart_of(const StudentExperimentResult& result) {
       p.errors.push_back(100.0 * ms.standard_error);
     };
     add(s.before_reward, s.before_success);
-    for (StudyCondition c : {StudyCondition::FullTrajectory, StudyCondition::Drills, StudyCondition::IndDrills})
-      add(s.of(c).reward, s.of(c).success);
+    for (StudyCondition c : {StudyCondition::FullTrajectory, StudyCondition::Drills, StudyCondition::IndDrills}) {
+      const bool tuned = !s.conditions.empty();
+      add(tuned ? s.of(c).reward : std::vector<double>{}, tuned ? s.of(c).success : std::vector<double>{});
+    }
     reward.groups.push_back(std::move(r));
     success.groups.push_back(std::move(p));
-  }
+  };
+  group(result.reference);
+  for (const StudentResult& s : result.students) group(s);
   figure.panels = {std::move(reward), std::move(success)};
   figure.notes.push_back("skills: " + result.extractor + (result.extractor_notice.empty() ? "" : " (" + result.extractor_notice + ")") +
                          "; seed " + std::to_string(result.config.seed) + "; " + std::to_string(result.config.scenarios_per_set) +

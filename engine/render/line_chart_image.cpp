@@ -63,10 +63,14 @@ struct LinePainter : Painter {
       std::vector<Vec2f> points;
       for (std::size_t i = 0; i < l.x.size() && i < l.y.size(); ++i) points.push_back({x_of(xr, box, l.x[i]), y_of(r, box, l.y[i])});
       if (points.size() > 1) renderer.polyline(points, Stroke::pixels(3.0f), l.color);
+      // A label goes above its point, or below it when the previous label sits too close to the left.
+      Vec2f last{-1e9f, -1e9f};
       for (std::size_t i = 0; i < points.size(); ++i) {
         renderer.fill_circle(points[i], 5 * s, l.color);
-        text_centered(dl, imgui.fonts().body, 13.0f * s, {points[i].x, points[i].y - 14 * s}, kText,
-                      printf_value(panel.value_format, l.y[i]));
+        Vec2f at{points[i].x, points[i].y - 14 * s};
+        if (std::fabs(at.x - last.x) < 40 * s && std::fabs(at.y - last.y) < 16 * s) at.y = points[i].y + 16 * s;
+        text_centered(dl, imgui.fonts().body, 13.0f * s, {at.x, at.y}, kText, printf_value(panel.value_format, l.y[i]));
+        last = at;
       }
     }
   }

@@ -110,7 +110,8 @@ SyntheticStudent train_and_measure(const SyntheticStudentRecipe& recipe, const S
 // One evaluation set: the student as it is, then a fine-tuned copy per condition on equal-size data.
 void run_evaluation_set(const SyntheticStudent& student, const FinetuneMaterial& material,
                         const StudentExperimentConfig& config, std::size_t s, int k,
-                        const std::vector<ParkingScenario>& set, StudentResult& r, const std::function<void()>& tick) {
+                        const std::vector<ParkingScenario>& set, const BcDataset& heldout, StudentResult& r,
+                        const std::function<void()>& tick) {
   const ParkingScore before = score_parking_student(student.policy, set);
   r.before_reward.push_back(before.mean_reward);
   r.before_step_reward.push_back(before.step_reward);
@@ -137,6 +138,7 @@ void run_evaluation_set(const SyntheticStudent& student, const FinetuneMaterial&
     out.pairs.push_back(data.pairs.size());
     out.reverse_pairs.push_back(count_reverse_pairs(data.pairs));
     out.rehearsal_pairs.push_back(rehearsal.size());
+    out.heldout_mse.push_back(split_mse(copy, heldout));
     tick();
   }
 }
@@ -247,13 +249,13 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
     report(progress, "training " + name, 1, 1);
     diagnose(kit, result.diagnosis_scenarios, config, student.policy, r, progress, "diagnosing " + name);
     const FinetuneMaterial material{demo_steps(pool), demo_skills(pool), r.diagnosis, config.num_targets};
-    for (StudyCondition c : kFinetuneConditions) r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}, {}, {}});
+    for (StudyCondition c : kFinetuneConditions) r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}, {}, {}, {}});
     if (config.learning_curve && r.recipe.kind == SyntheticStudentKind::ReversingDifficulty)
       result.curve = learning_curve(student, material, config, progress);
     const int units = config.evaluation_sets * (1 + static_cast<int>(r.conditions.size()));
     int done = 0;
     for (int k = 0; k < config.evaluation_sets; ++k)
-      run_evaluation_set(student, material, config, s, k, sets[static_cast<std::size_t>(k)], r,
+      run_evaluation_set(student, material, config, s, k, sets[static_cast<std::size_t>(k)], drives.heldout, r,
                          [&] { report(progress, "fine-tuning " + name, ++done, units); });
     result.students.push_back(std::move(r));
   }

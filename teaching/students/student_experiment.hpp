@@ -71,6 +71,9 @@ struct ConditionResult {
   std::vector<int> reverse_pairs; // per set: of which with reverse acceleration (u0 < 0)
   std::vector<double> finetune_loss;  // per set: last epoch's training MSE
   std::vector<int> rehearsal_pairs;   // per set: the student's own pairs added (finetune_rehearsal)
+  // Per set: the fine-tuned copy's action error on the held-out drives, split by the expert's acceleration
+  // sign: whether practice fixed the actions it was meant to (reversing) and what it cost elsewhere.
+  std::vector<SplitMse> heldout_mse;
 };
 
 struct StudentResult {

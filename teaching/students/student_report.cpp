@@ -32,6 +32,12 @@ std::string success_cell(const std::vector<double>& values) {
   return format("%5.1f%% ± %.1f%%", 100.0 * m.mean, 100.0 * m.standard_error);
 }
 
+double mean_mse(const std::vector<SplitMse>& values, bool reverse) {
+  double total = 0.0;
+  for (const SplitMse& m : values) total += reverse ? m.reverse : m.forward;
+  return values.empty() ? 0.0 : total / static_cast<double>(values.size());
+}
+
 double mean_of(const std::vector<int>& values) {
   double total = 0.0;
   for (int v : values) total += v;
@@ -160,7 +166,9 @@ Json student_json(const StudentResult& s, const TaskKit& kit) {
     conditions.push_back({{"condition", condition_name(r.condition)}, {"key", condition_key(r.condition)},
                           {"reward", stats_json(r.reward)}, {"step_reward", stats_json(r.step_reward)},
                           {"success", stats_json(r.success)}, {"pairs", r.pairs}, {"reverse_pairs", r.reverse_pairs},
-                          {"rehearsal_pairs", r.rehearsal_pairs}, {"finetune_loss", r.finetune_loss}});
+                          {"rehearsal_pairs", r.rehearsal_pairs}, {"finetune_loss", r.finetune_loss},
+                          {"heldout_mse_reverse", mean_mse(r.heldout_mse, true)},
+                          {"heldout_mse_forward", mean_mse(r.heldout_mse, false)}});
   return {{"student", student_name(s.recipe.kind)}, {"key", student_key(s.recipe.kind)},
           {"epochs", s.recipe.epochs}, {"reverse_keep_fraction", s.recipe.reverse_keep_fraction},
           {"hidden", s.recipe.hidden}, {"training_pairs", s.training_pairs},
@@ -219,21 +227,22 @@ std::string student_experiment_table(const StudentExperimentResult& result, cons
   cell(out, "reward (last step)", 19);
   cell(out, "reward (per step)", 19);
   cell(out, "success", 16);
-  out += "pairs  reverse\n";
+  out += "pairs  reverse  held-out MSE reverse / forward\n";
   for (const StudentResult& s : result.students) {
     cell(out, student_name(s.recipe.kind), 21);
     cell(out, "before", 16);
     cell(out, reward_cell(s.before_reward), 19);
     cell(out, reward_cell(s.before_step_reward), 19);
     cell(out, success_cell(s.before_success), 16);
-    out += "\n";
+    out += format("               %.4f / %.4f\n", s.heldout_mse.reverse, s.heldout_mse.forward);
     for (const ConditionResult& r : s.conditions) {
       cell(out, "", 21);
       cell(out, condition_name(r.condition), 16);
       cell(out, reward_cell(r.reward), 19);
       cell(out, reward_cell(r.step_reward), 19);
       cell(out, success_cell(r.success), 16);
-      out += format("%5.1f  %5.1f", mean_of(r.pairs), mean_of(r.reverse_pairs)) + "\n";
+      out += format("%5.1f  %5.1f", mean_of(r.pairs), mean_of(r.reverse_pairs));
+      out += format("    %.4f / %.4f\n", mean_mse(r.heldout_mse, true), mean_mse(r.heldout_mse, false));
     }
   }
   out += diagnosis_lines(result, kit);

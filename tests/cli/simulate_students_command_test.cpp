@@ -46,6 +46,30 @@ TEST(SimulateStudentsCommand, QuickRunPrintsTheTableAndWritesJsonAndChart) {
   ASSERT_GT(png.size(), 24u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
   EXPECT_EQ(png_size(png), (std::pair<int, int>{1280, 720}));
+
+  // The students' own drives, the yardstick and the appendix curve.
+  EXPECT_GT(doc.at("student_drives").at("pairs").get<int>(), 0);
+  EXPECT_EQ(doc.at("reference").at("key"), "fully-trained");
+  EXPECT_GT(doc.at("reference").at("heldout").at("mse").get<double>(), 0.0);
+  EXPECT_EQ(doc.at("learning_curve").at("points").size(), 3u);  // --quick: epochs 0, 5, 20
+  const std::string curve = test::read_bytes(dir / "students_curve.png");
+  ASSERT_GT(curve.size(), 24u);
+  EXPECT_EQ(png_size(curve), (std::pair<int, int>{1280, 720}));
+}
+
+TEST(SimulateStudentsCommand, StudyCornerIsRecordedAndBadSettingsAreOneLineErrors) {
+  const std::filesystem::path dir = test::scratch_path("simulate-students", "corner");
+  std::filesystem::remove_all(dir);
+  const auto r = test::run_skillcoach("simulate-students --quick --study-corner --no-curve --out-dir '" + dir.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json doc = read_json_file(dir / "students.json");
+  EXPECT_EQ(doc.at("config").at("region"), "study-corner");
+  EXPECT_FALSE(doc.contains("learning_curve"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "students_curve.png"));
+  for (const char* bad : {"--finetune-lr 0", "--finetune-epochs 0", "--student-drives -3", "--rehearsal 101"}) {
+    const auto e = test::run_skillcoach(std::string("simulate-students --quick ") + bad + " --out-dir /tmp/none");
+    EXPECT_EQ(e.exit_code, 2) << bad << "\n" << e.output;
+  }
 }
 
 TEST(SimulateStudentsCommand, RefusesAMissingModelFile) {

@@ -82,6 +82,8 @@ TEST(StudentExperiment, RunsTheProtocolWithEqualSizeDataForEveryCondition) {
       EXPECT_GT(pairs, 0);
       for (const ConditionResult& c : s.conditions) {
         EXPECT_EQ(c.pairs[static_cast<std::size_t>(k)], pairs) << condition_name(c.condition) << " set " << k;
+        ASSERT_EQ(c.heldout_mse.size(), 3u);
+        EXPECT_GT(c.heldout_mse[static_cast<std::size_t>(k)].reverse, 0.0);
         EXPECT_LE(c.reward[static_cast<std::size_t>(k)], 0.0);
         EXPECT_GE(c.success[static_cast<std::size_t>(k)], 0.0);
         EXPECT_LE(c.success[static_cast<std::size_t>(k)], 1.0);

@@ -28,9 +28,9 @@ TEST(StudentReport, ComparesConditionsPairedBySet) {
     return v;
   };
   const std::vector<double> all(6, 1.0), some(6, 0.5);
-  s.conditions = {{StudyCondition::IndDrills, ind, half(ind), all, {}, {}, {}, {}},
-                  {StudyCondition::Drills, drills, half(drills), some, {}, {}, {}, {}},
-                  {StudyCondition::FullTrajectory, full, half(full), some, {}, {}, {}, {}}};
+  s.conditions = {{StudyCondition::IndDrills, ind, half(ind), all, {}, {}, {}, {}, {}},
+                  {StudyCondition::Drills, drills, half(drills), some, {}, {}, {}, {}, {}},
+                  {StudyCondition::FullTrajectory, full, half(full), some, {}, {}, {}, {}, {}}};
   r.students = {s};
   const std::vector<ConditionComparison> c = compare_conditions(r);
   ASSERT_EQ(c.size(), 3u);
