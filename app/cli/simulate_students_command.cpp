@@ -185,7 +185,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--finetune-lr", args->finetune_lr, "Fine-tuning learning rate (default 5e-4, the students' own)")
       ->check(CLI::Range(1e-7, 1.0));
   sub.add_option("--student-drives", args->student_drives,
-                 "Expert drives the students are cloned on, apart from the teaching pool (default 1000)")
+                 "Expert drives the students are cloned on, apart from the teaching pool (default 600)")
       ->check(CLI::Range(1, 100000));
   sub.add_flag("--study-corner", args->study_corner,
                "The paper's study subset: pool and evaluation goals in the bottom-right corner (spots 12-14)");

@@ -62,35 +62,21 @@ struct BarPainter : Painter {
 }  // namespace
 
 RgbaImage render_bar_chart_figure(GlContext& context, const BarChartFigure& figure) {
-  context.make_current();
-  context.resize(figure.width, figure.height);
-  Renderer2D renderer(context);
-  ImGuiLayer imgui(context);
-  renderer.begin_frame(kBackground);
-  imgui.begin_frame(1.0 / 60.0);
-  BarPainter p{{renderer, imgui, ImGui::GetBackgroundDrawList(), imgui.scale()}};
-  const float w = static_cast<float>(figure.width), h = static_cast<float>(figure.height), s = p.s;
-  text_centered(p.dl, imgui.fonts().heading, 24.0f * s, {w / 2, 26 * s}, kText, figure.title);
-  std::vector<LegendEntry> legend;
-  for (const BarSeries& b : figure.series) legend.push_back({b.label, b.color});
-  p.legend(legend, 62 * s, w);
-  const float notes_height = static_cast<float>(figure.notes.size()) * 20.0f * s;
-  const float panel_width = w / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
-  for (std::size_t i = 0; i < figure.panels.size(); ++i) {
-    const BarChartPanel& panel = figure.panels[i];
-    const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 24 * s,
-                       h - 56 * s - notes_height};
-    const Range range = value_range(panel);
-    p.value_axis(panel.title, range, box);
-    p.bars(panel, figure.series, range, box);
-  }
-  for (std::size_t i = 0; i < figure.notes.size(); ++i)
-    p.dl->AddText(imgui.fonts().body, 14.0f * s, {16 * s, h - notes_height - 8 * s + 20.0f * s * static_cast<float>(i)}, kMuted,
-                  figure.notes[i].c_str());
-  renderer.end_frame();
-  imgui.end_frame();
-  context.present();
-  return context.read_rgba();
+  ChartFrame frame{figure.title, {}, figure.notes, figure.width, figure.height};
+  for (const BarSeries& b : figure.series) frame.legend.push_back({b.label, b.color});
+  return render_chart(context, frame, [&](Painter& painter, float bottom) {
+    BarPainter p{painter};
+    const float s = p.s;
+    const float panel_width = static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
+    for (std::size_t i = 0; i < figure.panels.size(); ++i) {
+      const BarChartPanel& panel = figure.panels[i];
+      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 24 * s,
+                         bottom - 56 * s};
+      const Range range = value_range(panel);
+      p.value_axis(panel.title, range, box);
+      p.bars(panel, figure.series, range, box);
+    }
+  });
 }
 
 }  // namespace sc

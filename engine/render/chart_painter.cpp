@@ -66,4 +66,26 @@ void Painter::legend(const std::vector<LegendEntry>& entries, float y, float wid
   }
 }
 
+RgbaImage render_chart(GlContext& context, const ChartFrame& frame, const std::function<void(Painter&, float bottom)>& panels) {
+  context.make_current();
+  context.resize(frame.width, frame.height);
+  Renderer2D renderer(context);
+  ImGuiLayer imgui(context);
+  renderer.begin_frame(kBackground);
+  imgui.begin_frame(1.0 / 60.0);
+  Painter p{renderer, imgui, ImGui::GetBackgroundDrawList(), imgui.scale()};
+  const float w = static_cast<float>(frame.width), h = static_cast<float>(frame.height), s = p.s;
+  text_centered(p.dl, imgui.fonts().heading, 24.0f * s, {w / 2, 26 * s}, kText, frame.title);
+  p.legend(frame.legend, 62 * s, w);
+  const float notes_height = static_cast<float>(frame.notes.size()) * 20.0f * s;
+  panels(p, h - notes_height);
+  for (std::size_t i = 0; i < frame.notes.size(); ++i)
+    p.dl->AddText(imgui.fonts().body, 14.0f * s, {16 * s, h - notes_height - 8 * s + 20.0f * s * static_cast<float>(i)}, kMuted,
+                  frame.notes[i].c_str());
+  renderer.end_frame();
+  imgui.end_frame();
+  context.present();
+  return context.read_rgba();
+}
+
 }  // namespace sc::chart

@@ -1,14 +1,17 @@
 #pragma once
 // What the figure images (bar_chart_image, line_chart_image) share: a value axis with round ticks, the
 // engine renderer's rectangles and lines, ImGui text, and a centred legend. Internal to engine/render.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <imgui.h>
 
 #include "engine/render/draw_types.hpp"
+#include "engine/render/gl_context.hpp"
 #include "engine/render/imgui_layer.hpp"
 #include "engine/render/renderer2d.hpp"
+#include "engine/render/rgba_image.hpp"
 
 namespace sc::chart {
 
@@ -50,5 +53,17 @@ struct Painter {
   // A row of colour swatches and labels centred at height y.
   void legend(const std::vector<LegendEntry>& entries, float y, float width);
 };
+
+struct ChartFrame {
+  std::string title;
+  std::vector<LegendEntry> legend;
+  std::vector<std::string> notes;  // small lines at the bottom
+  int width = 1280;
+  int height = 720;
+};
+
+// One figure: resizes `context`, draws the title, the legend and the notes, and calls
+// panels(painter, bottom) to draw the panels between the legend and `bottom` (pixels, above the notes).
+RgbaImage render_chart(GlContext& context, const ChartFrame& frame, const std::function<void(Painter&, float bottom)>& panels);
 
 }  // namespace sc::chart

@@ -93,36 +93,23 @@ std::vector<LegendEntry> legend_of(const LineChartFigure& figure) {
 }  // namespace
 
 RgbaImage render_line_chart_figure(GlContext& context, const LineChartFigure& figure) {
-  context.make_current();
-  context.resize(figure.width, figure.height);
-  Renderer2D renderer(context);
-  ImGuiLayer imgui(context);
-  renderer.begin_frame(kBackground);
-  imgui.begin_frame(1.0 / 60.0);
-  LinePainter p{{renderer, imgui, ImGui::GetBackgroundDrawList(), imgui.scale()}};
-  const float w = static_cast<float>(figure.width), h = static_cast<float>(figure.height), s = p.s;
-  text_centered(p.dl, imgui.fonts().heading, 24.0f * s, {w / 2, 26 * s}, kText, figure.title);
-  p.legend(legend_of(figure), 62 * s, w);
-  const float notes_height = static_cast<float>(figure.notes.size()) * 20.0f * s;
-  const float panel_width = w / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
-  const Range xr = x_range(figure);
-  for (std::size_t i = 0; i < figure.panels.size(); ++i) {
-    const LineChartPanel& panel = figure.panels[i];
-    const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 32 * s,
-                       h - 76 * s - notes_height};
-    const Range range = value_range(panel);
-    p.value_axis(panel.title, range, box);
-    p.x_axis(xr, box, figure.x_label);
-    p.references(panel, range, box);
-    p.series(panel, xr, range, box);
-  }
-  for (std::size_t i = 0; i < figure.notes.size(); ++i)
-    p.dl->AddText(imgui.fonts().body, 14.0f * s, {16 * s, h - notes_height - 8 * s + 20.0f * s * static_cast<float>(i)}, kMuted,
-                  figure.notes[i].c_str());
-  renderer.end_frame();
-  imgui.end_frame();
-  context.present();
-  return context.read_rgba();
+  const ChartFrame frame{figure.title, legend_of(figure), figure.notes, figure.width, figure.height};
+  return render_chart(context, frame, [&](Painter& painter, float bottom) {
+    LinePainter p{painter};
+    const float s = p.s;
+    const float panel_width = static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
+    const Range xr = x_range(figure);
+    for (std::size_t i = 0; i < figure.panels.size(); ++i) {
+      const LineChartPanel& panel = figure.panels[i];
+      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 32 * s,
+                         bottom - 76 * s};
+      const Range range = value_range(panel);
+      p.value_axis(panel.title, range, box);
+      p.x_axis(xr, box, figure.x_label);
+      p.references(panel, range, box);
+      p.series(panel, xr, range, box);
+    }
+  });
 }
 
 }  // namespace sc

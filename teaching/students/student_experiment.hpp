@@ -36,7 +36,7 @@ struct StudentExperimentConfig {
   std::uint64_t seed = 0;
   std::vector<SyntheticStudentRecipe> students;  // fine-tuned
   SyntheticStudentRecipe reference = SyntheticStudentRecipe::paper(SyntheticStudentKind::FullyTrained);
-  int student_drives = 1000;  // expert drives (whole lot) the students are cloned on, none in the pool
+  int student_drives = 600;   // expert drives (whole lot) the students are cloned on, none in the pool
   int heldout_drives = 200;   // expert drives no student saw: held-out MSE and success
   GoalRegion region = GoalRegion::WholeLot;  // goals of the evaluation sets (the kit's pool should match)
   int diagnosis_scenarios = 25;
