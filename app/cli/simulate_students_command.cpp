@@ -33,6 +33,7 @@ struct SimulateArgs {
   int finetune_epochs = 0;       // 0: the config's
   double finetune_lr = 0.0;      // 0: the config's
   int student_drives = 0;        // 0: the config's
+  double reverse_keep = -1.0;    // < 0: the recipe's (0.2, the paper)
   bool study_corner = false;
   bool no_curve = false;
   bool quick = false;
@@ -143,6 +144,8 @@ StudentExperimentConfig config_of(const SimulateArgs& args) {
   if (args.finetune_lr > 0) config.finetune_learning_rate = args.finetune_lr;
   if (args.student_drives > 0) config.student_drives = args.student_drives;
   if (args.study_corner) config.region = GoalRegion::StudyCorner;
+  for (SyntheticStudentRecipe& r : config.students)
+    if (r.kind == SyntheticStudentKind::ReversingDifficulty && args.reverse_keep >= 0) r.reverse_keep_fraction = args.reverse_keep;
   config.learning_curve = !args.no_curve;
   return config;
 }
@@ -187,6 +190,9 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--student-drives", args->student_drives,
                  "Expert drives the students are cloned on, apart from the teaching pool (default 600)")
       ->check(CLI::Range(1, 100000));
+  sub.add_option("--reverse-keep", args->reverse_keep,
+                 "Share of the reverse-acceleration pairs the reversing-difficulty student keeps (default 0.2, the paper)")
+      ->check(CLI::Range(0.0, 1.0));
   sub.add_flag("--study-corner", args->study_corner,
                "The paper's study subset: pool and evaluation goals in the bottom-right corner (spots 12-14)");
   sub.add_flag("--no-curve", args->no_curve, "Skip the appendix learning curve (students_curve.png)");

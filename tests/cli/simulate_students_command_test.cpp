@@ -66,7 +66,8 @@ TEST(SimulateStudentsCommand, StudyCornerIsRecordedAndBadSettingsAreOneLineError
   EXPECT_EQ(doc.at("config").at("region"), "study-corner");
   EXPECT_FALSE(doc.contains("learning_curve"));
   EXPECT_FALSE(std::filesystem::exists(dir / "students_curve.png"));
-  for (const char* bad : {"--finetune-lr 0", "--finetune-epochs 0", "--student-drives -3", "--rehearsal 101"}) {
+  for (const char* bad : {"--finetune-lr 0", "--finetune-epochs 0", "--student-drives -3", "--rehearsal 101",
+                          "--reverse-keep 1.5"}) {
     const auto e = test::run_skillcoach(std::string("simulate-students --quick ") + bad + " --out-dir /tmp/none");
     EXPECT_EQ(e.exit_code, 2) << bad << "\n" << e.output;
   }
