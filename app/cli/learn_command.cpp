@@ -30,6 +30,8 @@ struct LearnOptions {
   int pretest = 5;
   int eval = 5;
   int rounds = 1;
+  int weak_skills = 3;
+  int drills_per_weak_skill = 2;
   unsigned long long seed = 20221128;
   int trial_delay_ms = 0;
 };
@@ -38,6 +40,35 @@ void print_trial(const TrainingSession& s, const std::string& kind, const Submit
   std::printf("trial %s round %d reward %.4f %s\n", kind.c_str(), s.round(), kept.reward,
               kept.saved.stored ? "kept" : ("pending: " + kept.saved.message).c_str());
   std::fflush(stdout);
+}
+
+// The round's practice before it starts: what a learner is told, and the budget a researcher checks.
+void print_plan(const TrainingSession& s) {
+  const Curriculum& c = s.curriculum();
+  std::printf("plan round %d condition %s trials %d steps %d budget %d (reference: %s) minutes %d\n", s.round(),
+              std::string(condition_key(c.condition)).c_str(), c.trials(), c.total_steps(), c.budget_steps,
+              budget_reference(s.curriculum_config()).c_str(), s.practice_minutes());
+  for (std::size_t i = 0; i < c.items.size(); ++i) {
+    const PracticeItem& item = c.items[i];
+    std::string targets;
+    for (int m : item.target_skills) {
+      if (!targets.empty()) targets += ',';
+      targets += std::to_string(m);
+    }
+    std::printf("  item %zu %s targets %s sessions %d steps %d\n", i, std::string(practice_kind_key(item.kind)).c_str(),
+                targets.c_str(), item.sessions, item.steps());
+  }
+  std::fflush(stdout);
+}
+
+// "(drilled)" only for skills practised in this round, with how many trials.
+void print_skills(const TrainingSession& s, const RoundSummary& summary) {
+  for (const SkillChange& c : summary.skills) {
+    if (!c.seen && !c.targeted) continue;
+    std::printf("  skill %d %s: %.3f -> %.3f", c.skill, s.kit().describe_skill(c.skill).c_str(), c.before, c.after);
+    if (c.targeted) std::printf(" (drilled, %d trial%s)", c.practice_trials, c.practice_trials == 1 ? "" : "s");
+    std::printf("\n");
+  }
 }
 
 int run(const LearnOptions& o) {
@@ -49,6 +80,7 @@ int run(const LearnOptions& o) {
     session = TrainingSession::resume(*kit, store, *point, records::utc_timestamp_now);
     std::printf("resumed session %lld at round %d, %s, item %d\n", static_cast<long long>(session->session_id()),
                 session->round(), std::string(records::to_string(session->phase())).c_str(), session->item_index());
+    if (session->phase() != SessionPhase::Pretest && session->phase() != SessionPhase::Diagnosis) print_plan(*session);
   } else {
     SessionSettings settings;
     settings.learner = o.learner;
@@ -57,6 +89,8 @@ int run(const LearnOptions& o) {
     settings.pretest_count = o.pretest;
     settings.eval_count = o.eval;
     settings.seed = o.seed;
+    settings.weak_skills = o.weak_skills;
+    settings.drills_per_weak_skill = o.drills_per_weak_skill;
     session = std::make_unique<TrainingSession>(*kit, store, settings, records::utc_timestamp_now);
     std::printf("started session %lld\n", static_cast<long long>(session->session_id()));
   }
@@ -66,12 +100,14 @@ int run(const LearnOptions& o) {
     print_trial(s, kind, kept);
     if (o.trial_delay_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.trial_delay_ms));
   };
+  hooks.after_analysis = print_plan;
   while (true) {
     play_scripted_round(*session, hooks);
     const RoundSummary summary = session->summary();
     std::printf("summary round %d pretest %.4f eval %.4f improvement %+.4f practice %d analysis %.3f s\n",
                 summary.round, summary.pretest_mean, summary.eval_mean, summary.improvement, summary.practice_trials,
                 session->last_analysis_seconds());
+    print_skills(*session, summary);
     if (session->round() >= o.rounds || !session->can_continue()) break;
     session->start_next_round();
   }
@@ -89,6 +125,10 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--device", o->device, "Device recorded with the trials")->capture_default_str();
   sub.add_option("--pretest", o->pretest, "Pre-test scenarios (N_s)")->capture_default_str();
   sub.add_option("--eval", o->eval, "Evaluation scenarios per round")->capture_default_str();
+  sub.add_option("--weak-skills", o->weak_skills, "Ind. Drills / Adaptive: weakest skills drilled per round")
+      ->capture_default_str();
+  sub.add_option("--drills-per-skill", o->drills_per_weak_skill, "Ind. Drills / Adaptive: unique drills per weak skill")
+      ->capture_default_str();
   sub.add_option("--rounds", o->rounds, "Adaptive rounds to play")->capture_default_str()->check(CLI::Range(1, 20));
   sub.add_option("--seed", o->seed, "Session seed")->capture_default_str();
   sub.add_option("--trial-delay-ms", o->trial_delay_ms, "Pause after each kept trial (crash tests)")

@@ -18,10 +18,16 @@ int round_budget(const CurriculumInputs& inputs, const CurriculumConfig& config)
 
 AdaptiveRound make_round(std::size_t index, ExpertiseEstimate evidence, ExpertiseEstimate diagnosis,
                          const CurriculumInputs& inputs, const CurriculumConfig& config) {
-  Rng rng = Rng(inputs.seed).fork(kAdaptiveStream + index);
   AdaptiveRound round;
-  round.practice = individualized_drill_curriculum(StudyCondition::Adaptive, diagnosis,
-                                                   round_budget(inputs, config), inputs, config, rng);
+  if (config.budget_steps > 0) {
+    Rng rng = Rng(inputs.seed).fork(kAdaptiveStream + index);
+    round.practice = individualized_drill_curriculum(StudyCondition::Adaptive, diagnosis,
+                                                     round_budget(inputs, config), inputs, config, rng);
+  } else {
+    // The first round draws what Ind. Drills draws, so the two arms differ only in the later rounds.
+    Rng rng = index == 0 ? curriculum_rng(inputs, StudyCondition::IndDrills) : Rng(inputs.seed).fork(kAdaptiveStream + index);
+    round.practice = weak_skill_round(StudyCondition::Adaptive, diagnosis, inputs, config, rng);
+  }
   round.evidence = std::move(evidence);
   round.diagnosis = std::move(diagnosis);
   return round;

@@ -5,9 +5,10 @@
 // rounds are merged with latest_evidence_expertise, and the next round's drills target the new weakest
 // skills. Round 0 targets the pre-test diagnosis exactly as Ind. Drills does.
 //
-// Budget: each round gets ceil(total budget / config.adaptive_rounds) steps, so config.adaptive_rounds
-// rounds practise as long as the other conditions. next_round keeps producing rounds after that (the app
-// offers "another adaptive round"); comparisons should stop at adaptive_rounds.
+// Size: by default every round is a weak_skill_round (2 unique drills for each of the 3 weakest teachable
+// skills); the first one draws the same drills as Ind. Drills, so a round practises the reference budget.
+// With an explicit budget each round gets ceil(budget / config.adaptive_rounds) steps instead. next_round
+// keeps producing rounds (the app offers "another adaptive round").
 #include <vector>
 
 #include "teaching/curricula/curriculum.hpp"

@@ -6,23 +6,30 @@
 //
 // Conditions (the paper's §5 study arms, plus Adaptive):
 //   Full Trajectory  whole expert trajectories, distinct ones in a seeded random order, 1 session each;
-//   Time Heuristic   the Skills recipe applied to the time-heuristic segmentation (K equal slices; a
-//                    slice index plays the role of a skill id), kind TimeSlice;
-//   Skills           the `common_skills` (3) most common skills of the pool (most expert segments first,
-//                    ties: lower id), one random expert segment each, `sessions_per_skill` (3) sessions;
+//   Time Heuristic   the time-heuristic segmentation (K equal slices; a slice index plays the role of a
+//                    skill id): `common_skills` (3) different slice indices drawn per learner (seeded),
+//                    `sessions_per_skill` (3) sessions each, kind TimeSlice;
+//   Skills           the `common_skills` (3) most common teachable skills of the pool (most expert segments
+//                    first, ties: lower id), one random expert segment each, `sessions_per_skill` (3) sessions;
 //   Drills           random drills from the offline drill set (DrillBuilder::random_drills);
-//   Ind. Drills      Alg. 3 drills for the learner's pre-test diagnosis, weakest target first;
-//   Adaptive         Ind. Drills in rounds, re-diagnosed after each round (adaptive_curriculum.hpp).
+//   Ind. Drills      a round of `drills_per_weak_skill` (2) unique Alg. 3 drills for each of the
+//                    `weak_skills` (3) weakest teachable skills of the pre-test diagnosis, weakest first;
+//   Adaptive         such rounds, re-diagnosed after each round (adaptive_curriculum.hpp).
+// Teachable: a skill with an expert segment of at least `min_skill_steps` (teachable_skills.hpp).
 // When a condition runs out of distinct material before the budget is reached it starts another pass
 // (fresh random segments, reshuffled order).
 //
-// Budget rule (equal practice time across conditions, as in the paper): the budget counts control steps
-// of practice (item steps x sessions). Sessions are added one at a time in the condition's order while the
-// total is below the budget; the session that would cross it is kept only if that lands at least as close
-// to the budget as stopping. Hence |total − budget| <= ½ · (longest session offered), and the first session
-// is always kept. The default budget (budget_steps = 0) is the Skills condition's natural length for the
-// same seed (3 skills x 3 sessions), the paper's reference arm.
+// Budget (budget_steps = 0, the default: equal practice time across arms, as in the paper): the reference
+// arm is Ind. Drills — its round for this pre-test (the same segments make_curriculum(IndDrills) draws)
+// sets the budget B in control steps, so Ind. Drills and Adaptive's first round practise exactly B. The
+// other arms take sessions in their order while the total is below B·(1 − budget_tolerance); a session
+// that would pass B·(1 + budget_tolerance) is skipped together with the rest of its item and the next
+// item is tried. With the default tolerance of 4.5 % any two arms differ by less than 10 %.
+// An explicit budget (budget_steps > 0; the synthetic students use it) keeps the older rule: sessions are
+// added while the total is below the budget, the crossing one only if that lands at least as close to it,
+// and Ind. Drills repeats its drills until the budget is filled.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "teaching/curricula/study_condition.hpp"
@@ -52,20 +59,25 @@ struct Curriculum {
   int budget_steps = 0;  // the budget it was filled to
   std::vector<PracticeItem> items;
   int total_steps() const;
+  int trials() const;  // sum of the items' sessions
 };
 
 struct CurriculumConfig {
   DrillConfig drills = DrillConfig::parking();
-  int budget_steps = 0;             // 0: the Skills condition's natural length (see above)
+  int budget_steps = 0;             // 0: the reference arm's length (Ind. Drills, see above)
   int common_skills = 3;            // Skills / Time Heuristic: the 3 most common skills ...
   int sessions_per_skill = 3;       // ... 3 sessions each
   int sessions_per_trajectory = 1;  // Full Trajectory ("3 different full trajectories")
   int sessions_per_drill = 1;
-  int adaptive_rounds = 3;          // Adaptive: the budget is split evenly over this many rounds
+  int adaptive_rounds = 3;          // Adaptive with an explicit budget: split evenly over this many rounds
+  int weak_skills = 3;              // Ind. Drills / Adaptive round: the 3 weakest teachable skills ...
+  int drills_per_weak_skill = 2;    // ... 2 unique drills each (the paper's user study)
+  int min_skill_steps = 1;          // teachable: a segment this long; 1 = every skill (kits set their own)
+  double budget_tolerance = 0.045;  // default budget: every arm within ±4.5 % of the reference
 
   static CurriculumConfig parking();  // DrillConfig::parking()
   static CurriculumConfig writing();  // DrillConfig::writing()
-  void validate() const;              // InputError for non-positive counts or a negative budget
+  void validate() const;  // InputError for non-positive counts, a negative budget or tolerance outside [0, 0.5]
 };
 
 struct CurriculumInputs {
@@ -84,10 +96,22 @@ struct CurriculumInputs {
 Curriculum make_curriculum(StudyCondition condition, const CurriculumInputs& inputs,
                            const CurriculumConfig& config);
 
-// config.budget_steps if set, else the Skills condition's natural length for inputs.seed.
+// config.budget_steps if set, else the reference arm's length: the Ind. Drills round for inputs.pretest.
 int curriculum_budget_steps(const CurriculumInputs& inputs, const CurriculumConfig& config);
+// Where the budget comes from, in words: "Ind. Drills, 2 drills for each of the 3 weakest skills" or
+// "set to 400 steps".
+std::string budget_reference(const CurriculumConfig& config);
 
-// Ind. Drills filled to `budget` for a diagnosis (used by Ind. Drills and each Adaptive round).
+// One round of drills for `diagnosis`: config.drills_per_weak_skill unique drills for each of the
+// config.weak_skills weakest teachable skills that occur in an expert n-gram, weakest first, each
+// config.sessions_per_drill sessions. budget_steps is its own length. InputError when no skill qualifies.
+Curriculum weak_skill_round(StudyCondition condition, const ExpertiseEstimate& diagnosis,
+                            const CurriculumInputs& inputs, const CurriculumConfig& config, Rng& rng);
+
+// The Rng stream make_curriculum uses for a condition (Adaptive's first round shares Ind. Drills' stream).
+Rng curriculum_rng(const CurriculumInputs& inputs, StudyCondition condition);
+
+// Ind. Drills filled to `budget` for a diagnosis (explicit budgets only; see above).
 Curriculum individualized_drill_curriculum(StudyCondition condition, const ExpertiseEstimate& diagnosis,
                                            int budget, const CurriculumInputs& inputs,
                                            const CurriculumConfig& config, Rng& rng);

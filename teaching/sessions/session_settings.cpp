@@ -11,18 +11,27 @@ void SessionSettings::validate() const {
     throw InputError("session settings", "pretest_count must be within 1..50, got " + std::to_string(pretest_count));
   if (eval_count < 1 || eval_count > 50)
     throw InputError("session settings", "eval_count must be within 1..50, got " + std::to_string(eval_count));
+  if (weak_skills < 1 || weak_skills > 10)
+    throw InputError("session settings", "weak_skills must be within 1..10, got " + std::to_string(weak_skills));
+  if (drills_per_weak_skill < 1 || drills_per_weak_skill > 5)
+    throw InputError("session settings",
+                     "drills_per_weak_skill must be within 1..5, got " + std::to_string(drills_per_weak_skill));
 }
 
 Json settings_to_json(const SessionSettings& settings) {
   return Json{{"pretest_count", settings.pretest_count},
               {"eval_count", settings.eval_count},
-              {"device", settings.device}};
+              {"device", settings.device},
+              {"weak_skills", settings.weak_skills},
+              {"drills_per_weak_skill", settings.drills_per_weak_skill}};
 }
 
 void read_settings_json(const JsonView& view, SessionSettings& settings) {
   if (auto v = view.find("pretest_count")) settings.pretest_count = static_cast<int>(v->integer());
   if (auto v = view.find("eval_count")) settings.eval_count = static_cast<int>(v->integer());
   if (auto v = view.find("device")) settings.device = v->string();
+  if (auto v = view.find("weak_skills")) settings.weak_skills = static_cast<int>(v->integer());
+  if (auto v = view.find("drills_per_weak_skill")) settings.drills_per_weak_skill = static_cast<int>(v->integer());
 }
 
 }  // namespace sc

@@ -13,7 +13,8 @@ double mean_of(const std::vector<double>& values) {
 
 RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewards,
                              const std::vector<double>& eval_rewards, const ExpertiseEstimate& before,
-                             const ExpertiseEstimate& after, const std::vector<int>& targets, int practice_trials) {
+                             const ExpertiseEstimate& after, const std::map<int, int>& trials_per_skill,
+                             int practice_trials) {
   RoundSummary summary;
   summary.round = round;
   summary.pretest_mean = mean_of(pretest_rewards);
@@ -33,7 +34,9 @@ RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewar
       return m < e.num_skills() && e.occurrences[static_cast<std::size_t>(m)] > 0;
     };
     change.seen = occurs(before) || occurs(after);
-    change.targeted = std::find(targets.begin(), targets.end(), m) != targets.end();
+    const auto practised = trials_per_skill.find(m);
+    change.practice_trials = practised == trials_per_skill.end() ? 0 : practised->second;
+    change.targeted = change.practice_trials > 0;
     summary.skills.push_back(change);
   }
   return summary;

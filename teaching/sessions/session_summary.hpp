@@ -2,6 +2,7 @@
 // What the summary screen shows for one round: pre-test vs evaluation score, the improvement and how each
 // skill's expertise changed (Alg. 2 on the pre-test vs Alg. 2 on the evaluation, both against the expert's
 // segmentation of their own scenarios; the same number of trials keeps the two comparable).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@ struct SkillChange {
   int skill = 0;
   double before = 0.0;    // E_m on the pre-test (<= 0, 0 = no mistakes seen)
   double after = 0.0;     // E_m on this round's evaluation
-  bool targeted = false;  // drilled in this round
+  bool targeted = false;  // practised in this round: a target of a drill or a skill item that was played
+  int practice_trials = 0;  // how many practice trials of this round targeted it (extra attempts included)
   bool seen = false;      // the expert used it in the pre-test or evaluation scenarios
 };
 
@@ -30,6 +32,7 @@ double mean_of(const std::vector<double>& values);  // 0 for an empty list
 
 RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewards,
                              const std::vector<double>& eval_rewards, const ExpertiseEstimate& before,
-                             const ExpertiseEstimate& after, const std::vector<int>& targets, int practice_trials);
+                             const ExpertiseEstimate& after, const std::map<int, int>& trials_per_skill,
+                             int practice_trials);
 
 }  // namespace sc

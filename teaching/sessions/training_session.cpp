@@ -1,6 +1,7 @@
 #include "teaching/sessions/training_session.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "engine/core/error.hpp"
 #include "teaching/curricula/curriculum_json.hpp"
@@ -156,12 +157,19 @@ CurriculumInputs TrainingSession::curriculum_inputs() const {
   return inputs;
 }
 
+CurriculumConfig TrainingSession::curriculum_config() const {
+  CurriculumConfig config = kit_.curriculum_config();
+  config.weak_skills = settings_.weak_skills;
+  config.drills_per_weak_skill = settings_.drills_per_weak_skill;
+  return config;
+}
+
 void TrainingSession::compute_round(int r) {
   // An Adaptive round builds on every earlier one (resume may reach here before they were recomputed).
   if (r > 1 && !state(r - 1).analysed) compute_round(r - 1);
   RoundState& st = state(r);
   const CurriculumInputs inputs = curriculum_inputs();
-  const CurriculumConfig config = kit_.curriculum_config();
+  const CurriculumConfig config = curriculum_config();
   if (settings_.condition != StudyCondition::Adaptive) {
     st.diagnosis = inputs.pretest;
     st.curriculum = make_curriculum(settings_.condition, inputs, config);
@@ -243,6 +251,12 @@ std::vector<int> TrainingSession::slot_items(const Curriculum& curriculum) const
 
 int TrainingSession::practice_slot_count() const { return static_cast<int>(slot_items(curriculum()).size()); }
 
+int TrainingSession::practice_minutes() const {
+  double seconds = 0.0;
+  for (int item : slot_items(curriculum())) seconds += drill_time_limit(item);
+  return static_cast<int>(std::ceil(seconds / 60.0));
+}
+
 int TrainingSession::current_item() const {
   require_phase(SessionPhase::Drills, "a practice item");
   return slot_items(curriculum()).at(static_cast<std::size_t>(item_index()));
@@ -321,7 +335,19 @@ RoundSummary TrainingSession::summary() const {
     eval_trials_list.push_back({static_cast<int>(i), experts.at(i).skills, st.eval[i]});
   }
   return summarize_round(round(), pre, eval, diagnose_trials(kit_, pre_trials), diagnose_trials(kit_, eval_trials_list),
-                         st.diagnosis.targets, static_cast<int>(st.practice.size()));
+                         practice_per_skill(), static_cast<int>(st.practice.size()));
+}
+
+std::map<int, int> TrainingSession::practice_per_skill() const {
+  // Whole trajectories and time slices practise no skill on their own, so they mark none as drilled.
+  const RoundState& st = state(round());
+  std::map<int, int> out;
+  for (const auto& [item, trial] : st.practice) {
+    const PracticeItem& practised = st.curriculum.items.at(static_cast<std::size_t>(item));
+    if (practised.kind != PracticeKind::Drill && practised.kind != PracticeKind::Skill) continue;
+    for (int m : practised.target_skills) ++out[m];
+  }
+  return out;
 }
 
 void TrainingSession::start_next_round() {

@@ -78,9 +78,13 @@ class TrainingSession {
   const ExpertiseEstimate& diagnosis() const;  // of the current round (after analyse)
   const Curriculum& curriculum() const;        // of the current round (after analyse)
   double last_analysis_seconds() const { return analysis_seconds_; }
+  CurriculumConfig curriculum_config() const;  // the kit's, with the session's round size
 
   // ---- drills (phase Drills) ----
   int practice_slot_count() const;            // sum of the curriculum's sessions
+  // What the learner is told before practice: the most time the round's attempts may take (the sum of their
+  // time limits; the demos come on top), in minutes, rounded up.
+  int practice_minutes() const;
   int current_item() const;                   // item of the current slot
   int session_of_slot() const;                // 1-based session number of the current slot within its item
   const PlayableDrill& drill(int item) const;  // projected once, cached
@@ -89,9 +93,9 @@ class TrainingSession {
   records::SaveResult record_demo(int item, const Json& expert_trial, const TrialTimes& times);
   // A practice trial of the current slot; advances to the next slot (or to Evaluation after the last).
   SubmittedTrial submit_practice(const Json& trial, const TrialTimes& times);
-  // "Try again": one more attempt at `item` beyond the budget; does not advance.
+  // "Try again" / "one more on this skill": one more attempt at `item` beyond the budget; does not advance.
   SubmittedTrial submit_extra_practice(int item, const Json& trial, const TrialTimes& times);
-  // Skips the remaining practice of this round (recorded as progress only), to Evaluation.
+  // Ends practice early: skips the remaining slots of this round (recorded as progress only), to Evaluation.
   void skip_practice();
 
   // ---- summary (phase Summary) ----
@@ -116,6 +120,7 @@ class TrainingSession {
 
   void select_pretest();
   CurriculumInputs curriculum_inputs() const;
+  std::map<int, int> practice_per_skill() const;  // this round's played practice trials per target skill
   void compute_round(int round);  // diagnosis + curriculum of `round` (no writes)
   RoundState& state(int round);
   const RoundState& state(int round) const;

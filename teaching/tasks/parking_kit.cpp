@@ -105,6 +105,15 @@ std::string ParkingKit::describe_skill(int skill) const {
   return descriptions_[static_cast<std::size_t>(skill)];
 }
 
+CurriculumConfig ParkingKit::curriculum_config() const {
+  // A manoeuvre shorter than about a second is over before a learner has seen what the car did (human
+  // reaction time alone is ~0.25 s) and cannot be steered on purpose; CompILE's 1-2 step filler segments
+  // (reference-facts §3.8) are exactly that.
+  CurriculumConfig config = CurriculumConfig::parking();
+  config.min_skill_steps = parking::kControlHz;
+  return config;
+}
+
 double ParkingKit::time_limit_seconds(int expert_steps) const {
   const double t = 2.0 * std::max(expert_steps, 0) * kSecondsPerControlStep + kReadingSeconds;
   return std::min(t, kHorizonSeconds);

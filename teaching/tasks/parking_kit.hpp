@@ -41,7 +41,8 @@ class ParkingKit final : public TaskKit {
   std::string extractor_notice() const override { return extractor_notice_; }
   const std::vector<ExpertDemo>& expert_pool() const override { return demos_; }
   const DrillProjector& projector() const override { return *projector_; }
-  CurriculumConfig curriculum_config() const override { return CurriculumConfig::parking(); }
+  // CurriculumConfig::parking() with min_skill_steps = 5: one second of driving (5 Hz control).
+  CurriculumConfig curriculum_config() const override;
 
   StepSequence steps_of(const Json& trial) const override;
   // The trial's last recorded reward; trials without rewards are re-simulated from their actions.

@@ -111,6 +111,15 @@ std::string WritingKit::describe_skill(int skill) const {
   return descriptions_[static_cast<std::size_t>(skill)];
 }
 
+CurriculumConfig WritingKit::curriculum_config() const {
+  // Pen steps are infilled to at most 1 px in x and in y, so 30 steps are 30-42 px of pen path: about a
+  // third of a 100 px character, a stroke a learner can see and trace. Shorter segments (CompILE's 1-step
+  // tails, 20-odd step slivers at character edges) are flicks, not strokes.
+  CurriculumConfig config = CurriculumConfig::writing();
+  config.min_skill_steps = 30;
+  return config;
+}
+
 double WritingKit::time_limit_seconds(int expert_steps) const {
   return writing::writing_time_limit_seconds(static_cast<std::size_t>(std::max(expert_steps, 0)));
 }

@@ -42,7 +42,8 @@ class WritingKit final : public TaskKit {
   std::string extractor_notice() const override { return extractor_notice_; }
   const std::vector<ExpertDemo>& expert_pool() const override { return demos_; }
   const DrillProjector& projector() const override { return *projector_; }
-  CurriculumConfig curriculum_config() const override { return CurriculumConfig::writing(); }
+  // CurriculumConfig::writing() with min_skill_steps = 30: 30 infilled pen steps, 30-42 px of path.
+  CurriculumConfig curriculum_config() const override;
 
   StepSequence steps_of(const Json& trial) const override;
   // non_positive_reward(score_writing(gold of the trial's scenario, the trial's points).score, 0).

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -76,6 +78,102 @@ TEST(LearnCommand, WritingSessionEndToEnd) {
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "writing");
 }
+
+// One arm's round as `learn` prints it before practice ("plan round 1 condition ... minutes M") and the
+// items below it ("  item 0 drill targets 5 sessions 1 steps 27").
+struct PrintedPlan {
+  std::string condition;
+  int trials = -1, steps = -1, budget = -1, minutes = -1;
+  std::vector<std::string> kinds;
+  std::vector<int> first_targets;
+  std::vector<int> sessions;
+  int drilled_lines = 0;  // summary lines "(drilled, N trials)"
+};
+
+PrintedPlan parse_plan(const std::string& output) {
+  PrintedPlan plan;
+  std::size_t at = output.find("plan round 1 condition ");
+  if (at == std::string::npos) return plan;
+  char condition[64] = {0};
+  std::sscanf(output.c_str() + at, "plan round 1 condition %63s trials %d steps %d budget %d", condition, &plan.trials,
+              &plan.steps, &plan.budget);
+  plan.condition = condition;
+  const std::size_t minutes = output.find(" minutes ", at);
+  if (minutes != std::string::npos) plan.minutes = std::atoi(output.c_str() + minutes + 9);
+  for (at = output.find("\n  item ", at); at != std::string::npos; at = output.find("\n  item ", at + 1)) {
+    char kind[32] = {0};
+    int index = 0, target = -1, sessions = 0;
+    if (std::sscanf(output.c_str() + at, "\n  item %d %31s targets %d", &index, kind, &target) < 2) break;
+    const std::size_t s = output.find(" sessions ", at);
+    if (s != std::string::npos) sessions = std::atoi(output.c_str() + s + 10);
+    plan.kinds.push_back(kind);
+    plan.first_targets.push_back(target);
+    plan.sessions.push_back(sessions);
+  }
+  for (at = output.find("(drilled, "); at != std::string::npos; at = output.find("(drilled, ", at + 1)) ++plan.drilled_lines;
+  return plan;
+}
+
+// Every study arm of a task, run headless for the same learner and seed: the round sizes the arms are
+// defined by, and practice time-steps within ±4.5 % of the reference (Ind. Drills), so within 10 % of
+// each other. The database must hold exactly the practice trials the plan announced.
+void expect_equal_budgets(const std::string& task) {
+  std::map<std::string, PrintedPlan> plans;
+  for (const char* condition : {"full-trajectory", "time-heuristic", "skills", "drills", "ind-drills", "adaptive"}) {
+    const fs::path dir = fresh_dir(task + "_budget_" + condition);
+    const test::CommandResult r = test::run_skillcoach("learn --task " + task + " --condition " + condition +
+                                                       " --pretest 5 --eval 2 --learner budget --data-dir " + dir.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const PrintedPlan plan = parse_plan(r.output);
+    ASSERT_EQ(plan.condition, condition) << r.output;
+    ASSERT_EQ(plan.kinds.size(), plan.sessions.size());
+    EXPECT_GE(plan.minutes, 1) << condition;
+    records::LearnerStore store(dir);
+    const auto trials = store.trials_of_session(store.list_learners().at(0).sessions.at(0).session.id);
+    EXPECT_EQ(count_kind(trials, TrialKind::Practice), plan.trials) << condition;
+    std::printf("%s %-16s trials %2d steps %4d budget %4d minutes %d\n", task.c_str(), condition, plan.trials,
+                plan.steps, plan.budget, plan.minutes);
+    plans[condition] = plan;
+  }
+  const int budget = plans["ind-drills"].budget;
+  EXPECT_EQ(plans["ind-drills"].steps, budget);  // the reference arm
+  int lowest = budget, highest = budget;
+  for (const auto& [condition, plan] : plans) {
+    EXPECT_EQ(plan.budget, budget) << condition;
+    EXPECT_LE(std::abs(plan.steps - budget), 0.045 * budget) << condition << ": " << plan.steps << " vs " << budget;
+    lowest = std::min(lowest, plan.steps);
+    highest = std::max(highest, plan.steps);
+  }
+  EXPECT_LT(highest, 1.10 * lowest);
+  // Ind. Drills and Adaptive: 2 unique drills for each of the 3 weakest skills, weakest first.
+  for (const char* condition : {"ind-drills", "adaptive"}) {
+    const PrintedPlan& plan = plans[condition];
+    ASSERT_EQ(plan.trials, 6) << condition;
+    ASSERT_EQ(plan.first_targets.size(), 6u) << condition;
+    for (std::size_t i = 0; i < 6; ++i) {
+      EXPECT_EQ(plan.kinds[i], "drill");
+      EXPECT_EQ(plan.first_targets[i], plan.first_targets[i - i % 2]) << condition << " item " << i;
+    }
+    EXPECT_NE(plan.first_targets[0], plan.first_targets[2]);
+    EXPECT_NE(plan.first_targets[2], plan.first_targets[4]);
+    EXPECT_EQ(plan.drilled_lines, 3) << condition;  // every target was practised, with its trial count
+  }
+  // Skills: the 3 most common skills, 3 sessions each (further passes fill the budget).
+  const PrintedPlan& skills = plans["skills"];
+  ASSERT_GE(skills.sessions.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(skills.sessions[i], 3) << "skills item " << i;
+  EXPECT_EQ(std::set<int>(skills.first_targets.begin(), skills.first_targets.begin() + 3).size(), 3u);
+  // Time Heuristic: 3 different intervals.
+  const PrintedPlan& slices = plans["time-heuristic"];
+  EXPECT_EQ(std::set<int>(slices.first_targets.begin(), slices.first_targets.end()).size(), 3u);
+  // Whole trajectories and time slices drill no skill.
+  EXPECT_EQ(plans["full-trajectory"].drilled_lines, 0);
+  EXPECT_EQ(slices.drilled_lines, 0);
+}
+
+TEST(LearnCommand, ParkingArmsPractiseEqualBudgetsWithTheirRoundSizes) { expect_equal_budgets("parking"); }
+
+TEST(LearnCommand, WritingArmsPractiseEqualBudgetsWithTheirRoundSizes) { expect_equal_budgets("writing"); }
 
 // Starts `skillcoach learn` with a pause after every kept trial, reads its output until `kills_after`
 // trials were reported kept, and kills it with SIGKILL. Returns the number of trials it reported.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "engine/core/error.hpp"
@@ -165,6 +166,58 @@ TEST(TrainingSession, SummaryShowsTheImprovementAndPerSkillChanges) {
   EXPECT_TRUE(summary.skills[kForget].targeted);
   s.finish();
   EXPECT_FALSE(store.find_unfinished_session("ada", "toy"));
+}
+
+TEST(TrainingSession, SummaryMarksDrilledOnlyTheSkillsPractisedThisRoundWithTheirTrials) {
+  const test::ToyTaskKit kit;
+  records::LearnerStore store(fresh_dir("drilled"));
+  TrainingSession s(kit, store, toy_settings(StudyCondition::IndDrills), fixed_clock());
+  play_until(s, SessionPhase::Drills);
+  ASSERT_GE(s.curriculum().items.size(), 2u);
+  const int first_target = s.curriculum().items[0].target_skills.at(0);
+  play_practice_slot(s);  // one slot, one extra attempt at it, then the learner ends practice early
+  s.submit_extra_practice(0, test::toy_practice_trial(s.drill(0), -1, -1), {});
+  s.skip_practice();
+  play_until(s, SessionPhase::Summary);
+  const RoundSummary summary = s.summary();
+  int drilled = 0;
+  for (const SkillChange& c : summary.skills) {
+    drilled += c.targeted ? 1 : 0;
+    EXPECT_EQ(c.targeted, c.practice_trials > 0);
+  }
+  EXPECT_EQ(drilled, 1);  // the diagnosis targeted more, but only one skill was practised
+  EXPECT_EQ(summary.skills.at(static_cast<std::size_t>(first_target)).practice_trials, 2);
+  EXPECT_EQ(summary.practice_trials, 2);
+
+  // Whole trajectories practise no skill on its own: nothing is "drilled".
+  records::LearnerStore other(fresh_dir("drilled_full"));
+  TrainingSession full(kit, other, toy_settings(StudyCondition::FullTrajectory), fixed_clock());
+  play_until(full, SessionPhase::Summary);
+  for (const SkillChange& c : full.summary().skills) EXPECT_FALSE(c.targeted) << c.skill;
+}
+
+TEST(TrainingSession, RoundSizeComesFromTheSettingsIsRecordedAndTold) {
+  const test::ToyTaskKit kit;
+  const fs::path dir = fresh_dir("round_size");
+  records::LearnerStore store(dir);
+  SessionSettings settings = toy_settings(StudyCondition::IndDrills);
+  settings.weak_skills = 1;
+  settings.drills_per_weak_skill = 1;
+  TrainingSession s(kit, store, settings, fixed_clock());
+  play_until(s, SessionPhase::Drills);
+  EXPECT_EQ(s.curriculum().trials(), 1);
+  EXPECT_EQ(s.practice_slot_count(), 1);
+  // The toy kit's limit is 0.4 s per step: the round's minutes are its slots' limits, rounded up.
+  EXPECT_EQ(s.practice_minutes(), static_cast<int>(std::ceil(0.4 * s.curriculum().total_steps() / 60.0)));
+  EXPECT_GE(s.practice_minutes(), 1);
+  const auto point = store.find_unfinished_session("ada", "toy");
+  ASSERT_TRUE(point);
+  const auto resumed = TrainingSession::resume(kit, store, *point, fixed_clock());
+  EXPECT_EQ(resumed->settings().weak_skills, 1);
+  EXPECT_EQ(resumed->settings().drills_per_weak_skill, 1);
+  EXPECT_EQ(resumed->curriculum().items, s.curriculum().items);
+  settings.drills_per_weak_skill = 0;
+  EXPECT_THROW(TrainingSession(kit, store, settings, fixed_clock()), InputError);
 }
 
 TEST(TrainingSession, AdaptiveSessionContinuesWithAnotherRoundOnFreshScenarios) {

@@ -102,8 +102,15 @@ class LearnDiagnosisScreen final : public Screen {
     }
     ImGui::EndChild();
     ImGui::Dummy(ImVec2(0, 6 * sc));
-    ImGui::Text("%d practice trial%s planned (%s).", s.practice_slot_count(), s.practice_slot_count() == 1 ? "" : "s",
+    const int trials = s.practice_slot_count();
+    const int minutes = s.practice_minutes();
+    ImGui::Text("This round: %d practice trial%s, each after a demo; up to about %d minute%s of practice (%s).",
+                trials, trials == 1 ? "" : "s", minutes, minutes == 1 ? "" : "s",
                 std::string(condition_name(s.settings().condition)).c_str());
+    if (s.settings().condition != StudyCondition::Adaptive)  // research mode: the arm's share of the budget
+      ImGui::TextDisabled("Practice time-steps %d of a budget of %d (reference: %s).", s.curriculum().total_steps(),
+                          s.curriculum().budget_steps, budget_reference(s.curriculum_config()).c_str());
+    learn_ui::muted_wrapped("You can ask for one more on a skill after any practice trial, or end practice early.");
     if (learn_ui::primary_button(ui, "Start the drills") || confirm_) ui.navigator.go_to(screen_for_phase(s.phase()));
     confirm_ = false;
     learn_ui::end_card();

@@ -76,7 +76,10 @@ void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
         if (hooks.after_trial) hooks.after_trial(s, pre ? "pretest" : "eval", kept);
         break;
       }
-      case SessionPhase::Diagnosis: s.analyse(); break;
+      case SessionPhase::Diagnosis:
+        s.analyse();
+        if (hooks.after_analysis) hooks.after_analysis(s);
+        break;
       case SessionPhase::Drills: {
         const int item = s.current_item();
         const Json reference = s.kit().drill_trial(s.drill(item));

@@ -30,6 +30,7 @@ namespace sc {
 struct ScriptedRunHooks {
   std::function<bool(const TrainingSession&)> stop;  // optional
   std::function<void(const TrainingSession&, const std::string& kind, const SubmittedTrial&)> after_trial;
+  std::function<void(const TrainingSession&)> after_analysis;  // optional: the round's curriculum is made
 };
 void play_scripted_round(TrainingSession& session, const ScriptedRunHooks& hooks = {});
 

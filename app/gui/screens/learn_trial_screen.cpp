@@ -241,7 +241,7 @@ class LearnTrialScreen final : public Screen {
     learn_ui::title(ui, drive_->succeeded() ? "Parked!" : drive_->collided() ? "Bump!" : "Time is up");
     ImGui::Text("Score %s  (0 is the expert's result)", learn_ui::reward_text(last_reward_).c_str());
     if (!note_.empty()) learn_ui::muted_wrapped(note_.c_str());
-    if (was_practice_ && ImGui::Button("Try again", ImVec2(-1, 40 * ui.ui_scale))) {
+    if (was_practice_ && ImGui::Button("One more on this skill", ImVec2(-1, 40 * ui.ui_scale))) {
       retry_item_ = last_item_;
       prepare();
     } else if (learn_ui::primary_button(ui, s.phase() == SessionPhase::Drills || s.phase() == SessionPhase::Pretest ||
@@ -249,6 +249,11 @@ class LearnTrialScreen final : public Screen {
                                                 ? "Next"
                                                 : "Continue") ||
                confirm_) {
+      next(ui);
+    }
+    if (was_practice_ && s.phase() == SessionPhase::Drills &&
+        ImGui::Button("End practice: go to the final test", ImVec2(-1, 40 * ui.ui_scale))) {
+      s.skip_practice();
       next(ui);
     }
     learn_ui::end_card();

@@ -256,10 +256,15 @@ class LearnWriteTrialScreen final : public Screen {
     if (score_) ImGui::Text("Recall %.2f  ·  precision %.2f  ·  %s", score_->recall, score_->precision, trial_end_text(end_reason_));
     if (!note_.empty()) learn_ui::muted_wrapped(note_.c_str());
     const bool confirm = ui.time_seconds > stage_started_ && learn_ui::confirm_pressed(ui.input);
-    if (was_practice_ && ImGui::Button("Try again", ImVec2(-1, 40 * ui.ui_scale))) {
+    if (was_practice_ && ImGui::Button("One more on this skill", ImVec2(-1, 40 * ui.ui_scale))) {
       retry_item_ = last_item_;
       prepare(ui.time_seconds);
     } else if (learn_ui::primary_button(ui, "Next") || confirm) {
+      next(ui);
+    }
+    if (was_practice_ && session().phase() == SessionPhase::Drills &&
+        ImGui::Button("End practice: go to the final test", ImVec2(-1, 40 * ui.ui_scale))) {
+      session().skip_practice();
       next(ui);
     }
     learn_ui::end_card();

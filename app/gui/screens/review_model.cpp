@@ -3,6 +3,7 @@
 #include "app/gui/screens/learn_flow.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
+#include "teaching/review/practice_rounds.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 
 namespace sc {
@@ -57,6 +58,7 @@ void ReviewModel::select_session(std::int64_t id) {
     diagnosis_.reset();
     diagnosis_tried_ = false;
     diagnosis_problem.clear();
+    practice_lines_.reset();
     if (!session_->record().trials.empty()) select_trial(session_->record().trials.front().seq);
   } catch (const InputError& e) {
     message = e.what();
@@ -131,6 +133,21 @@ const review::DiagnosisExplanation* ReviewModel::diagnosis() {
     }
   }
   return diagnosis_ ? &*diagnosis_ : nullptr;
+}
+
+const std::vector<std::string>& ReviewModel::practice_lines() {
+  if (!practice_lines_) {
+    practice_lines_.emplace();
+    if (session_) {
+      try {
+        for (const auto& round : review::practice_rounds(session_->record()))
+          practice_lines_->push_back(review::practice_round_text(round));
+      } catch (const InputError& e) {
+        practice_lines_->push_back(e.what());
+      }
+    }
+  }
+  return *practice_lines_;
 }
 
 }  // namespace sc

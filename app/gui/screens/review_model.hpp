@@ -44,6 +44,8 @@ class ReviewModel {
   const review_view::ExpertiseChart* expertise_chart();
   const review::DiagnosisExplanation* diagnosis();
   std::string diagnosis_problem;
+  // One line per round: practice planned and played against the budget (review::practice_round_text).
+  const std::vector<std::string>& practice_lines();
 
  private:
   const TaskKit& kit(const std::string& task);
@@ -63,6 +65,7 @@ class ReviewModel {
   std::optional<review_view::ExpertiseChart> chart_;
   std::optional<review::DiagnosisExplanation> diagnosis_;
   bool diagnosis_tried_ = false;
+  std::optional<std::vector<std::string>> practice_lines_;
 };
 
 }  // namespace sc

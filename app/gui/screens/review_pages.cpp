@@ -163,6 +163,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   ImGui::PushFont(ui.fonts.bold);
   ImGui::TextUnformatted("Expertise per skill across rounds (stored diagnoses)");
   ImGui::PopFont();
+  for (const std::string& line : model.practice_lines()) ImGui::TextDisabled("%s", line.c_str());
   if (const auto* chart = model.expertise_chart(); chart && !chart->skills.empty()) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - 8 * s,
