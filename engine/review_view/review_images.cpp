@@ -112,9 +112,11 @@ RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture
         dl.AddText(imgui.fonts().bold, fs, {x, y}, kText, title.c_str());
         y += fs * 1.4f;
         dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kBefore), 4.0f * s);
-        const std::string before = "before: " + std::to_string(picture.before.size()) + " pre-test trials";
+        const std::string before = "before: " + std::to_string(picture.before.size()) +
+                                   (picture.before.size() == 1 ? " pre-test trial" : " pre-test trials");
         dl.AddText({x + fs * 2.2f, y}, kText, before.c_str());
-        const std::string after = "after: " + std::to_string(picture.after.size()) + " evaluation trials";
+        const std::string after = "after: " + std::to_string(picture.after.size()) +
+                                  (picture.after.size() == 1 ? " evaluation trial" : " evaluation trials");
         dl.AddLine({x + box_w * 0.5f, y + fs * 0.5f}, {x + box_w * 0.5f + fs * 1.6f, y + fs * 0.5f}, to_u32(kAfter), 4.0f * s);
         dl.AddText({x + box_w * 0.5f + fs * 2.2f, y}, kText, after.c_str());
         y += fs * 1.3f;
