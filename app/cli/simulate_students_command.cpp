@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/simulate_writing_students.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/render/bar_chart_image.hpp"
 #include "teaching/students/student_report.hpp"
@@ -26,6 +27,8 @@ struct SimulateArgs {
   int pairs = 0;
   double rehearsal = 0.0;
   bool quick = false;
+  std::string task = "parking";
+  WritingSimulateArgs writing;  // --task writing: the shared options are copied in, plus the writing-only ones
 };
 
 // One updating line on a terminal; otherwise one line per finished phase (logs stay short).
@@ -76,6 +79,16 @@ BarChartFigure chart_of(const StudentExperimentResult& result) {
 }
 
 int run(const SimulateArgs& args) {
+  if (args.task == "writing") {
+    WritingSimulateArgs w = args.writing;
+    w.seed = args.seed;
+    w.out_dir = args.out_dir;
+    w.model = args.model;
+    w.pairs = args.pairs;
+    w.rehearsal = args.rehearsal;
+    w.quick = args.quick;
+    return run_writing_students(w);
+  }
   StudentExperimentConfig config = args.quick ? StudentExperimentConfig::quick() : StudentExperimentConfig::paper();
   config.seed = args.seed;
   config.finetune_pairs = args.pairs;
@@ -105,6 +118,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--rehearsal", args->rehearsal,
                  "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
       ->check(CLI::Range(0.0, 100.0));
+  sub.add_option("--task", args->task, "parking (default) or writing")->check(CLI::IsMember({"parking", "writing"}));
+  add_writing_student_options(sub, args->writing);
   sub.add_flag("--quick", args->quick, "Tiny students, few sets: checks the pipeline in seconds, concludes nothing");
   return [args] { return run(*args); };
 }
