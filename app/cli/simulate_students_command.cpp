@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/simulate_writing_students.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/render/bar_chart_image.hpp"
 #include "engine/render/line_chart_image.hpp"
@@ -37,6 +38,8 @@ struct SimulateArgs {
   bool study_corner = false;
   bool no_curve = false;
   bool quick = false;
+  std::string task = "parking";
+  WritingSimulateArgs writing;  // --task writing: the shared options are copied in, plus the writing-only ones
 };
 
 // One updating line on a terminal; otherwise one line per finished phase (logs stay short).
@@ -150,7 +153,21 @@ StudentExperimentConfig config_of(const SimulateArgs& args) {
   return config;
 }
 
+int run_writing(const SimulateArgs& args) {
+  WritingSimulateArgs w = args.writing;
+  w.seed = args.seed;
+  w.out_dir = args.out_dir;
+  w.model = args.model;
+  w.pairs = args.pairs;
+  w.rehearsal = args.rehearsal;
+  w.quick = args.quick;
+  w.finetune_epochs = args.finetune_epochs;
+  w.finetune_learning_rate = args.finetune_lr;
+  return run_writing_students(w);
+}
+
 int run(const SimulateArgs& args) {
+  if (args.task == "writing") return run_writing(args);
   const StudentExperimentConfig config = config_of(args);
   config.validate();
   const std::unique_ptr<TaskKit> kit = experiment_kit(args);
@@ -183,7 +200,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--rehearsal", args->rehearsal,
                  "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
       ->check(CLI::Range(0.0, 100.0));
-  sub.add_option("--finetune-epochs", args->finetune_epochs, "Fine-tuning epochs (default 100, the paper)")
+  sub.add_option("--task", args->task, "parking (default) or writing")->check(CLI::IsMember({"parking", "writing"}));
+  sub.add_option("--finetune-epochs", args->finetune_epochs, "Fine-tuning epochs (default: parking 100, the paper; writing 10)")
       ->check(CLI::Range(1, 100000));
   sub.add_option("--finetune-lr", args->finetune_lr, "Fine-tuning learning rate (default 5e-4, the students' own)")
       ->check(CLI::Range(1e-7, 1.0));
@@ -196,6 +214,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_flag("--study-corner", args->study_corner,
                "The paper's study subset: pool and evaluation goals in the bottom-right corner (spots 12-14)");
   sub.add_flag("--no-curve", args->no_curve, "Skip the appendix learning curve (students_curve.png)");
+  add_writing_student_options(sub, args->writing);
   sub.add_flag("--quick", args->quick, "Tiny students, few sets: checks the pipeline in seconds, concludes nothing");
   return [args] { return run(*args); };
 }
