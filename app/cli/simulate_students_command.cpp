@@ -192,7 +192,9 @@ int run(const SimulateArgs& args) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<SimulateArgs>();
-  sub.add_option("--seed", args->seed, "Seed of students, scenarios and fine-tuning data (default 0)");
+  sub.add_option("--seed", args->seed, "Seed of students, scenarios and fine-tuning data (default 0)")
+      ->check(CLI::Validator([](std::string& v) { return v.starts_with('-') ? std::string("must not be negative") : ""; },
+                             "SEED >= 0"));
   sub.add_option("--out-dir", args->out_dir, "Where students.json and students.png go (default simulate-students)");
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt, else the time heuristic)");
   sub.add_option("--pairs", args->pairs, "Fine-tuning pairs per condition (default 0: one round of Ind. Drills per set)")
