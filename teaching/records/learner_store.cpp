@@ -15,35 +15,6 @@
 namespace sc::records {
 namespace {
 
-// Plain words for the storage faults a learner may meet; anything else keeps SQLite's own text.
-std::string describe(const SqliteError& e) {
-  switch (e.primary_code()) {
-    case SQLITE_FULL: return "the disk or the database is full";
-    case SQLITE_READONLY: return "the database is read-only";
-    case SQLITE_BUSY:
-    case SQLITE_LOCKED: return "the database is locked by another program";
-    case SQLITE_IOERR: return std::string("disk I/O error (") + e.what() + ")";
-    case SQLITE_CANTOPEN:
-    case SQLITE_PERM: return "the database file cannot be opened for writing";
-    default: return e.what();
-  }
-}
-
-// Faults that go away by themselves or when the user frees space / fixes permissions; anything else
-// (e.g. a missing table) needs the database repaired, so promising a retry would mislead.
-bool is_storage_fault(const SqliteError& e) {
-  switch (e.primary_code()) {
-    case SQLITE_FULL:
-    case SQLITE_READONLY:
-    case SQLITE_BUSY:
-    case SQLITE_LOCKED:
-    case SQLITE_IOERR:
-    case SQLITE_CANTOPEN:
-    case SQLITE_PERM: return true;
-    default: return false;
-  }
-}
-
 void require_text(std::string_view value, std::string_view what) {
   if (value.empty()) throw InputError("learner record", std::string(what) + " is empty");
 }
@@ -69,7 +40,7 @@ auto LearnerStore::read(Fn&& query) const {
   try {
     return query(connection());
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot be read (" + describe(e) + ")");
+    throw InputError(path_.string(), "cannot be read (" + describe_storage_error(e) + ")");
   }
 }
 
@@ -83,7 +54,7 @@ auto LearnerStore::write_now(const std::string& what, Fn&& write) {
     transaction.commit();
     return result;
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot " + what + ": " + describe(e));
+    throw InputError(path_.string(), "cannot " + what + ": " + describe_storage_error(e));
   }
 }
 
@@ -172,7 +143,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect() const {
   } catch (const SqliteError& e) {
     const int code = e.primary_code();
     if (options_.read_only || (code != SQLITE_READONLY && code != SQLITE_CANTOPEN && code != SQLITE_PERM))
-      throw InputError(where, "cannot be opened (" + describe(e) + ")");
+      throw InputError(where, "cannot be opened (" + describe_storage_error(e) + ")");
   }
   return connect_immutable();
 }
@@ -186,7 +157,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect_immutable() const {
     require_current_schema(*db);
     return db;
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot be opened (" + describe(e) + ")");
+    throw InputError(path_.string(), "cannot be opened (" + describe_storage_error(e) + ")");
   }
 }
 
@@ -325,7 +296,7 @@ bool LearnerStore::try_write_pending(std::string& problem) {
     }
     return true;
   } catch (const SqliteError& e) {
-    problem = describe(e);
+    problem = describe_storage_error(e);
     retryable_ = is_storage_fault(e);
   } catch (const InputError& e) {
     problem = e.what();
