@@ -4,6 +4,8 @@
 #include <memory>
 #include <string>
 
+#include <csignal>
+
 #include <CLI/CLI.hpp>
 
 #include "app/cli/command_registry.hpp"
@@ -11,6 +13,10 @@
 #include "engine/core/error.hpp"
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f) the kernel would kill the program with SIGXFSZ in the middle of a
+  // write, losing the trial being stored; ignored, the write fails with EFBIG like a full disk, and the
+  // learner store keeps the trial pending and says so.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"SkillCoach - learn to park a car and to write Balinese characters with individualized drills.\n"
                "Run without arguments to open the trainer; use a subcommand for headless work."};
   app.require_subcommand(0, 1);

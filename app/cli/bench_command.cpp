@@ -124,6 +124,9 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--filter", options->filter, "Only benchmarks whose name matches this regular expression");
   return [options, out] {
     options->out_given = out->count() > 0;
+    // docs/benchmarks.md is the committed record of full runs; quick figures would silently replace it.
+    if (options->quick && !options->out_given)
+      throw InputError("--quick", "its figures are too rough for docs/benchmarks.md; name a file with --out");
     return run_bench(*options);
   };
 }

@@ -12,6 +12,8 @@
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
+#include "engine/parking/parking_trial.hpp"
+#include "engine/writing/writing_trial.hpp"
 #include "engine/parking_view/parking_path.hpp"
 #include "engine/parking_view/parking_trial_image.hpp"
 #include "engine/render/gl_context.hpp"
@@ -67,9 +69,24 @@ void write_drill_pngs(const TaskKit& kit, const Diagnosis& diagnosis, const std:
   }
 }
 
+// Each file is parsed with its own name before the diagnosis: a problem then names the file and the whole
+// JSON path ($.scenario.heading0, not "trial: $.heading0"), and a writing trace capped at its point limit
+// gets the documented warning.
+void check_trial_file(const std::string& task, const Json& doc, const std::string& file) {
+  if (task == "parking") {
+    parse_parking_trial(doc, file);
+    return;
+  }
+  for (const auto& warning : writing::parse_writing_trial(doc, file).warnings)
+    std::fprintf(stderr, "skillcoach: warning: %s\n", warning.c_str());
+}
+
 int run(const DiagnoseArgs& args) {
   std::vector<Json> trials;
-  for (const std::string& file : args.trials) trials.push_back(read_json_file(file));
+  for (const std::string& file : args.trials) {
+    trials.push_back(read_json_file(file));
+    check_trial_file(args.task, trials.back(), file);
+  }
   const std::unique_ptr<TaskKit> kit = make_task_kit(args.task, args.model);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   Diagnosis diagnosis;

@@ -1,5 +1,6 @@
 // skillcoach export: the whole learner database as one JSON document (trials embed their trajectory
-// files). Reads the database read-only; a missing, damaged, foreign or newer database exits with 2.
+// files). Reads the database read-only; a missing, damaged, foreign or newer database exits with 2, and so
+// does an export that had to leave damaged rows out (one line each).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -25,10 +26,12 @@ CommandRunner setup(CLI::App& sub) {
   return [options] {
     const std::filesystem::path data_dir =
         options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
-    const auto trials = records::export_database(data_dir, options->out);
-    std::printf("exported %zu trials from %s to %s\n", trials,
+    const auto result = records::export_database(data_dir, options->out);
+    std::printf("exported %zu trials from %s to %s\n", result.trials,
                 (data_dir / records::LearnerStore::kDatabaseFileName).string().c_str(), options->out.c_str());
-    return 0;
+    // Damaged rows: the rest is exported, but the command must not report a complete export.
+    for (const auto& problem : result.problems) std::fprintf(stderr, "skillcoach: error: %s\n", problem.c_str());
+    return result.problems.empty() ? 0 : 2;
   };
 }
 

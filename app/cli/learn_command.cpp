@@ -71,10 +71,25 @@ void print_skills(const TrainingSession& s, const RoundSummary& summary) {
   }
 }
 
+// Exit code of a session whose records are not all in the database: the work is not lost while the spill
+// file holds it, but the command must not report success.
+constexpr int kExitRecordsNotSaved = 3;
+
+// A last attempt to store what is pending; says what is not stored and where it is.
+int report_unsaved(records::LearnerStore& store) {
+  const auto result = store.flush();
+  if (result.pending == 0) return 0;
+  std::fprintf(stderr, "skillcoach: error: %s; %s\n", result.message.c_str(),
+               store.pending_spilled() ? "the next start of SkillCoach on this data directory saves them"
+                                       : "they are lost when this program ends");
+  return kExitRecordsNotSaved;
+}
+
 int run(const LearnOptions& o) {
   const auto kit = make_task_kit(o.task);
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
+  if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
   std::unique_ptr<TrainingSession> session;
   if (const auto point = store.find_unfinished_session(o.learner, kit->task())) {
     session = TrainingSession::resume(*kit, store, *point, records::utc_timestamp_now);
@@ -113,7 +128,8 @@ int run(const LearnOptions& o) {
   }
   session->finish();
   std::printf("finished session %lld\n", static_cast<long long>(session->session_id()));
-  return 0;
+  std::fflush(stdout);
+  return report_unsaved(store);
 }
 
 CommandRunner setup(CLI::App& sub) {

@@ -48,6 +48,8 @@ int render_parking(const RenderArgs& args, int width, int height) {
 // the gold word as a ghost ribbon.
 int render_writing(const RenderArgs& args, int width, int height) {
   const writing::WritingTrial trial = writing::read_writing_trial(args.trajectory);
+  for (const auto& warning : trial.warnings)  // e.g. a trace capped at its point limit
+    std::fprintf(stderr, "skillcoach: warning: %s\n", warning.c_str());
   writing_view::WritingRenderOptions options;
   options.overlay_expert = args.overlay == "expert";
   options.width = width;

@@ -85,6 +85,8 @@ int run(const SegmentArgs& args) {
     steps = parking_step_sequence(*parking);
   } else {
     writing_trial = writing::parse_writing_trial(doc, args.trial);
+    for (const auto& warning : writing_trial->warnings)  // e.g. a trace capped at its point limit
+      std::fprintf(stderr, "skillcoach: warning: %s\n", warning.c_str());
     points = writing::infill_trace(writing_trial->trace()).points;
     steps = writing_step_sequence(writing::trace_step_data(points, writing_trial->scenario.alphabet,
                                                            writing_trial->scenario.word));

@@ -14,6 +14,11 @@ namespace {
 constexpr int kMaxRepeat = 1000;
 constexpr int kMaxFrames = 1000000;
 constexpr std::size_t kMaxExpandedSteps = 200000;  // a typo in nested repeats must not eat the memory
+// Nesting is read recursively and each level's JSON path is longer, so depth is bounded (scripts use 1-2
+// levels); and repeats of empty or small bodies are bounded by the work they expand to, counting every
+// pass through a list of steps, not only the steps kept (1000^3 empty passes never add a step).
+constexpr int kMaxRepeatDepth = 16;
+constexpr std::size_t kMaxExpansionWork = 2000000;
 
 struct ActionName {
   std::string_view key;
@@ -78,6 +83,7 @@ class ScriptReader {
 
   void read_steps(const JsonView& steps) {
     if (!steps.is_array()) steps.fail("expected an array of steps");
+    count_work(steps, 1 + steps.size());
     for (std::size_t i = 0; i < steps.size(); ++i) read_step(steps.at(i));
   }
 
@@ -163,7 +169,16 @@ class ScriptReader {
 
   void read_repeat(const JsonView& step) {
     const int times = int_in(step.at("repeat"), 0, kMaxRepeat);
+    if (depth_ >= kMaxRepeatDepth) step.fail("repeats nested more than " + std::to_string(kMaxRepeatDepth) + " deep");
+    ++depth_;
     for (int i = 0; i < times; ++i) read_steps(step.at("steps"));
+    --depth_;
+  }
+
+  void count_work(const JsonView& where, std::size_t units) {
+    work_ += units;
+    if (work_ > kMaxExpansionWork)
+      where.fail("the script's repeats expand to more than " + std::to_string(kMaxExpansionWork) + " passes and steps");
   }
 
   void add(const ScriptStep& s, const JsonView& step) {
@@ -173,6 +188,8 @@ class ScriptReader {
   }
 
   InputScript& script_;
+  int depth_ = 0;
+  std::size_t work_ = 0;
 };
 
 }  // namespace

@@ -74,4 +74,20 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
   }
 }
 
+void write_output_file(const std::filesystem::path& file, std::string_view bytes) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status) || std::filesystem::is_regular_file(status) ||
+      std::filesystem::is_directory(status)) {
+    write_file_atomically(file, bytes);
+    return;
+  }
+  const int fd = ::open(file.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw InputError(file.string(), "cannot be written: " + errno_text());
+  std::string reason;
+  if (!write_all(fd, bytes)) reason = errno_text();
+  if (::close(fd) != 0 && reason.empty()) reason = errno_text();
+  if (!reason.empty()) throw InputError(file.string(), "write failed: " + reason);
+}
+
 }  // namespace sc

@@ -23,4 +23,9 @@ enum class FileDurability { Normal, Durable };
 void write_file_atomically(const std::filesystem::path& file, std::string_view bytes,
                            FileDurability durability = FileDurability::Normal);
 
+// For files the user names as output (--out): a regular or new file is written atomically as above; an
+// existing device or FIFO (/dev/stdout, /dev/full, a pipe) is written in place, because replacing its node
+// by a regular file would be wrong, and its write errors are reported the same way.
+void write_output_file(const std::filesystem::path& file, std::string_view bytes);
+
 }  // namespace sc

@@ -1,12 +1,11 @@
 #include "engine/core/json_file.hpp"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <system_error>
 
 #include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/input_file.hpp"
 
 namespace sc {
 
@@ -24,19 +23,14 @@ Json parse_json_text(std::string_view text, std::string_view source) {
 }
 
 Json read_json_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), std::filesystem::exists(file) ? "cannot be read" : "no such file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(file.string(), "read error");
-  return parse_json_text(buffer.str(), file.string());
+  return parse_json_text(read_input_file(file, kMaxJsonFileBytes), file.string());
 }
 
 void write_json_file(const std::filesystem::path& file, const Json& doc, int indent) {
   // Strings that did not come from JSON (SQLite text of a damaged database, device names) may hold
   // invalid UTF-8; the default dump() then throws and the whole document (an export, a spill file of
   // pending trials) would be lost. Such bytes become U+FFFD instead (found by tests/fuzz).
-  write_file_atomically(file, doc.dump(indent, ' ', false, Json::error_handler_t::replace) + '\n');
+  write_output_file(file, doc.dump(indent, ' ', false, Json::error_handler_t::replace) + '\n');
 }
 
 JsonView::JsonView(const Json& node, std::string source, std::string path)

@@ -18,7 +18,8 @@ using Json = nlohmann::json;
 Json read_json_file(const std::filesystem::path& file);
 // Parses text that came from `source` (a file name or description used in errors).
 Json parse_json_text(std::string_view text, std::string_view source);
-// Writes atomically (temporary file + rename) so a crash never leaves half a document.
+// Writes atomically (temporary file + rename) so a crash never leaves half a document; an existing device
+// or FIFO (/dev/stdout) is written in place (write_output_file).
 void write_json_file(const std::filesystem::path& file, const Json& doc, int indent = 1);
 
 class JsonView {

@@ -4,8 +4,10 @@
 #include <stb_image_write.h>
 
 #include <cstring>
+#include <string>
 #include <system_error>
 
+#include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
 
 namespace sc {
@@ -18,12 +20,22 @@ void write_png(const std::filesystem::path& file, const RgbaImage& image) {
     std::error_code ec;
     std::filesystem::create_directories(file.parent_path(), ec);
   }
-  const int ok = stbi_write_png(file.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4);
-  if (ok == 0) throw InputError(file.string(), "could not write PNG (folder missing or not writable?)");
+  // Encoded in memory, then written by our own writer: stb's file writer ignores fwrite/fclose errors, so a
+  // full disk left a truncated PNG and success; write_output_file checks every write and leaves no partial
+  // file behind.
+  std::string bytes;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  const int ok = stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.pixels.data(),
+                                        image.width * 4);
+  if (ok == 0) throw InputError(file.string(), "could not encode the PNG");
+  write_output_file(file, bytes);
 }
 
 RgbaImage read_png(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw InputError(file.string(), "PNG file not found");
+  std::error_code ec;  // non-throwing: an unsearchable directory is one line
+  if (!std::filesystem::exists(file, ec)) throw InputError(file.string(), "PNG file not found");
   int w = 0, h = 0, channels = 0;
   stbi_uc* data = stbi_load(file.c_str(), &w, &h, &channels, 4);
   if (data == nullptr) throw InputError(file.string(), std::string("not a readable PNG: ") + stbi_failure_reason());

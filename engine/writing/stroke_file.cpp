@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/input_file.hpp"
 
 namespace sc::writing {
 namespace {
@@ -78,12 +79,8 @@ StrokeDrawing parse_stroke_text(std::string_view text, std::string_view source) 
 }
 
 StrokeDrawing read_stroke_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), std::filesystem::exists(file) ? "cannot be read" : "no such file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(file.string(), "read error");
-  return parse_stroke_text(buffer.str(), file.string());
+  // Omniglot stroke files are a few kB; the JSON limit is ample.
+  return parse_stroke_text(read_input_file(file, kMaxJsonFileBytes), file.string());
 }
 
 }  // namespace sc::writing

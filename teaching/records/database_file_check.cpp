@@ -29,6 +29,12 @@ std::string hex32(std::uint32_t value) {
   return text;
 }
 
+bool wal_has_content(const std::filesystem::path& file) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(file.string() + "-wal", ec);
+  return !ec && size > 0;
+}
+
 // Header checks that catch garbage and truncation before SQLite sees the file.
 void check_header(const std::filesystem::path& file, std::uintmax_t size) {
   const std::string where = file.string();
@@ -49,8 +55,10 @@ void check_header(const std::filesystem::path& file, std::uintmax_t size) {
     throw InputError(where, "truncated or damaged: " + std::to_string(size) + " bytes is not a whole number of " +
                                 std::to_string(page_size) + "-byte pages; it was not changed");
   // The in-header page count is valid when the "version-valid-for" number matches the change counter.
+  // With a non-empty write-ahead log it may count pages that only the log holds yet: a checkpoint that
+  // failed on a full disk writes page 1 and then cannot grow the file. quick_check judges that case.
   const auto pages = big_endian_u32(header, 28);
-  if (pages != 0 && big_endian_u32(header, 92) == big_endian_u32(header, 24) &&
+  if (pages != 0 && !wal_has_content(file) && big_endian_u32(header, 92) == big_endian_u32(header, 24) &&
       std::uintmax_t{pages} * page_size > size) {
     throw InputError(where, "truncated: the header counts " + std::to_string(pages) + " pages but the file holds " +
                                 std::to_string(size / page_size) + "; it was not changed");
@@ -89,7 +97,8 @@ DatabaseFileState check_database_file(const std::filesystem::path& file, int new
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
   if (ec) {
-    if (!std::filesystem::exists(file)) return {true, 0};
+    // Non-throwing checks: a data directory we may not search (EACCES) is a one-line problem, not a crash.
+    if (ec == std::errc::no_such_file_or_directory) return {true, 0};
     throw InputError(where, "cannot be read: " + ec.message());
   }
   if (size == 0) return {true, 0};

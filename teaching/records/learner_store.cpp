@@ -15,22 +15,18 @@
 namespace sc::records {
 namespace {
 
-// Plain words for the storage faults a learner may meet; anything else keeps SQLite's own text.
-std::string describe(const SqliteError& e) {
-  switch (e.primary_code()) {
-    case SQLITE_FULL: return "the disk or the database is full";
-    case SQLITE_READONLY: return "the database is read-only";
-    case SQLITE_BUSY:
-    case SQLITE_LOCKED: return "the database is locked by another program";
-    case SQLITE_IOERR: return std::string("disk I/O error (") + e.what() + ")";
-    case SQLITE_CANTOPEN:
-    case SQLITE_PERM: return "the database file cannot be opened for writing";
-    default: return e.what();
-  }
-}
-
 void require_text(std::string_view value, std::string_view what) {
   if (value.empty()) throw InputError("learner record", std::string(what) + " is empty");
+}
+
+// A name shown on screens and in reports: not blank (tabs and newlines count as blank, which the schema's
+// CHECK on spaces alone let through) and free of control characters.
+void require_learner_name(std::string_view name) {
+  require_text(name, "learner name");
+  if (name.find_first_not_of(" \t\n\r\v\f") == std::string_view::npos)
+    throw InputError("learner record", "learner name is blank");
+  for (unsigned char c : name)
+    if (c < 0x20 || c == 0x7f) throw InputError("learner record", "learner name contains a control character");
 }
 
 void require_json(const std::string& text, std::string_view what) {
@@ -44,7 +40,7 @@ auto LearnerStore::read(Fn&& query) const {
   try {
     return query(connection());
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot be read (" + describe(e) + ")");
+    throw InputError(path_.string(), "cannot be read (" + describe_storage_error(e) + ")");
   }
 }
 
@@ -58,19 +54,22 @@ auto LearnerStore::write_now(const std::string& what, Fn&& write) {
     transaction.commit();
     return result;
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot " + what + ": " + describe(e));
+    throw InputError(path_.string(), "cannot " + what + ": " + describe_storage_error(e));
   }
 }
 
 LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions options) : options_(options) {
   const auto dir = data_dir.empty() ? default_data_dir() : data_dir;
   path_ = dir / kDatabaseFileName;
+  locks_ = std::make_unique<LearnerLocks>(path_.string() + ".lock");
   if (options_.read_only) {
-    if (!std::filesystem::exists(path_)) throw InputError(path_.string(), "no such database");
+    std::error_code ec;  // the non-throwing forms here and below: EACCES is a one-line problem
+    if (!std::filesystem::exists(path_, ec) && !ec) throw InputError(path_.string(), "no such database");
   } else {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    if (ec && !std::filesystem::is_directory(dir))
+    std::error_code is_dir_error;
+    if (ec && !std::filesystem::is_directory(dir, is_dir_error))
       throw InputError(dir.string(), "cannot create the data directory: " + ec.message());
   }
   const auto state = check_database_file(path_, current_schema_version());
@@ -119,7 +118,8 @@ void LearnerStore::reconnect() {
 
 std::unique_ptr<SqliteDb> LearnerStore::connect() const {
   const std::string where = path_.string();
-  if (std::filesystem::exists(path_) && read_immutably(path_)) return connect_immutable();
+  std::error_code ec;
+  if (std::filesystem::exists(path_, ec) && read_immutably(path_)) return connect_immutable();
   try {
     auto db = std::make_unique<SqliteDb>(
         path_, options_.read_only ? SqliteDb::Mode::ReadOnly : SqliteDb::Mode::ReadWriteCreate);
@@ -143,7 +143,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect() const {
   } catch (const SqliteError& e) {
     const int code = e.primary_code();
     if (options_.read_only || (code != SQLITE_READONLY && code != SQLITE_CANTOPEN && code != SQLITE_PERM))
-      throw InputError(where, "cannot be opened (" + describe(e) + ")");
+      throw InputError(where, "cannot be opened (" + describe_storage_error(e) + ")");
   }
   return connect_immutable();
 }
@@ -157,7 +157,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect_immutable() const {
     require_current_schema(*db);
     return db;
   } catch (const SqliteError& e) {
-    throw InputError(path_.string(), "cannot be opened (" + describe(e) + ")");
+    throw InputError(path_.string(), "cannot be opened (" + describe_storage_error(e) + ")");
   }
 }
 
@@ -171,36 +171,37 @@ void LearnerStore::require_current_schema(SqliteDb& db) const {
 
 void LearnerStore::load_spill_file() {
   const auto spill = spill_path();
-  if (!std::filesystem::exists(spill)) return;
+  std::error_code ec;
+  if (!std::filesystem::exists(spill, ec)) return;
   try {
     for (auto& write : read_spill_file(spill)) pending_.push_back(std::move(write));
   } catch (const InputError& e) {
     // Never overwrite what may be a learner's only copy of a trial: move it aside and say so.
     auto aside = spill;
     aside += ".unreadable";
-    for (int n = 2; std::filesystem::exists(aside); ++n) {
+    for (int n = 2; std::filesystem::exists(aside, ec); ++n) {
       aside = spill;
       aside += ".unreadable" + std::to_string(n);
     }
-    std::error_code ec;
     std::filesystem::rename(spill, aside, ec);
     open_message_ = std::string(e.what()) + (ec ? "; left in place" : "; moved to " + aside.string());
   }
 }
 
 std::int64_t LearnerStore::ensure_learner(std::string_view name, std::string_view created) {
-  require_text(name, "learner name");
+  require_learner_name(name);
   require_text(created, "learner creation time");
   return write_now("save learner \"" + std::string(name) + "\"",
                    [&](SqliteDb& db) { return insert_learner_if_new(db, name, created); });
 }
 
 std::int64_t LearnerStore::begin_session(const NewSession& session) {
-  require_text(session.learner, "learner name");
+  require_learner_name(session.learner);
   require_text(session.task, "task");
   require_text(session.condition, "condition");
   require_text(session.started, "session start time");
   require_json(session.settings_json, "session settings");
+  claim_learner(session.learner);
   const auto id = write_now("start a session for \"" + session.learner + "\"", [&](SqliteDb& db) {
     return insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
   });
@@ -268,12 +269,15 @@ SaveResult LearnerStore::flush() {
     return {true, 0, {}};
   }
   const auto count = pending_.size();
+  const std::string next = retryable_ ? "will retry on the next save"
+                                      : "retrying cannot help until the database is repaired or moved aside";
   return {false, count,
           path_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") +
-              " not saved yet (" + problem + "); " + spill_pending() + "; will retry on the next save"};
+              " not saved yet (" + problem + "); " + spill_pending() + "; " + next};
 }
 
 bool LearnerStore::try_write_pending(std::string& problem) {
+  retryable_ = true;
   if (options_.read_only) {
     problem = "the database was opened read-only";
     return false;
@@ -292,7 +296,8 @@ bool LearnerStore::try_write_pending(std::string& problem) {
     }
     return true;
   } catch (const SqliteError& e) {
-    problem = describe(e);
+    problem = describe_storage_error(e);
+    retryable_ = is_storage_fault(e);
   } catch (const InputError& e) {
     problem = e.what();
   }
@@ -300,9 +305,11 @@ bool LearnerStore::try_write_pending(std::string& problem) {
 }
 
 std::string LearnerStore::spill_pending() {
+  spilled_ = false;
   if (options_.read_only) return "kept in memory only (store opened read-only)";
   try {
     write_spill_file(spill_path(), path_, pending_);
+    spilled_ = true;
     return "kept in memory and in " + spill_path().string();
   } catch (const InputError& e) {
     return std::string("kept in memory only (") + e.what() + ")";
@@ -336,8 +343,13 @@ void LearnerStore::require_session(std::int64_t session_id) const {
   if (!known) throw InputError(path_.string(), "unknown session id " + std::to_string(session_id));
 }
 
+void LearnerStore::claim_learner(std::string_view name) const {
+  if (!options_.read_only) locks_->claim(name);
+}
+
 std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_view learner,
                                                                 std::string_view task) const {
+  claim_learner(learner);
   const auto sessions = read([&](SqliteDb& db) { return query_unfinished_sessions(db, learner, task); });
   for (const auto& row : sessions) {
     ResumePoint point{row, read([&](SqliteDb& db) { return query_trial_count(db, row.id); })};

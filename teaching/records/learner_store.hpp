@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "teaching/records/data_dir.hpp"
+#include "teaching/records/learner_lock.hpp"
 #include "teaching/records/pending_writes.hpp"
 #include "teaching/records/record_types.hpp"
 
@@ -57,6 +58,10 @@ class LearnerStore {
   // (the app shows it and can retry) instead of being queued.
   std::int64_t ensure_learner(std::string_view name, std::string_view created);
   std::int64_t begin_session(const NewSession& session);
+  // One trainer per learner (learner_lock.hpp): a writable store claims the learner in begin_session and
+  // find_unfinished_session, and holds the claim until it is destroyed. Throws sc::InputError when another
+  // trainer holds them.
+  void claim_learner(std::string_view name) const;
   // These never throw for storage faults (see SaveResult); they throw sc::InputError for an invalid
   // record (unknown session, payload that is not JSON, empty task/device/timestamps, non-finite score).
   SaveResult record_trial(const TrialRecord& trial);  // assigns the next seq of the session
@@ -67,11 +72,14 @@ class LearnerStore {
   // Retries the pending writes (reopening the database if it was read-only).
   SaveResult flush();
   std::size_t pending_count() const { return pending_.size(); }
+  // True when every pending write is also in the spill file, so it survives the end of the program.
+  bool pending_spilled() const { return pending_.empty() || spilled_; }
   // Non-empty when opening found something the user should know (e.g. an unreadable spill file).
   const std::string& open_message() const { return open_message_; }
 
   // ---- resuming ----
   // The newest unfinished session of `learner` for `task` (any task if empty), with pending writes applied.
+  // A writable store claims the learner first (claim_learner), so two trainers never resume one session.
   std::optional<ResumePoint> find_unfinished_session(std::string_view learner, std::string_view task = {}) const;
 
   // ---- instructor review (database content only) ----
@@ -104,6 +112,9 @@ class LearnerStore {
   std::deque<PendingWrite> pending_;
   std::map<std::int64_t, int> last_seq_;  // per session: last seq handed out
   std::string open_message_;
+  std::unique_ptr<LearnerLocks> locks_;  // mutable through the pointer: claims are not database content
+  bool spilled_ = false;    // the last spill_pending() wrote every pending write
+  bool retryable_ = true;   // the last failed write was a storage fault (not e.g. a missing table)
 };
 
 }  // namespace sc::records

@@ -1,5 +1,9 @@
 #include "teaching/records/record_writes.hpp"
 
+#include <sqlite3.h>
+
+#include <string>
+
 namespace sc::records {
 namespace {
 
@@ -10,6 +14,22 @@ void update_progress(SqliteDb& db, std::int64_t session_id, const SessionProgres
       .bind(3, std::int64_t{progress.item_index})
       .bind(4, session_id)
       .run();
+}
+
+// The seq is taken: a replay of this very trial (the spill file of a store whose commit did land) is fine;
+// another trial under that number means a second trainer wrote to the session, and merging the two
+// silently would lose one of them, so the write fails and stays pending.
+void require_same_trial(SqliteDb& db, const TrialWrite& write) {
+  auto existing = db.prepare("SELECT started, trajectory FROM trials WHERE session_id = ?1 AND seq = ?2");
+  existing.bind(1, write.trial.session_id).bind(2, std::int64_t{write.seq});
+  const bool same = existing.step() && existing.column_text(0) == write.trial.started &&
+                    existing.column_text(1) == write.trial.trajectory_json;
+  existing.run();
+  if (!same) {
+    throw SqliteError(SQLITE_CONSTRAINT_UNIQUE,
+                      "trial " + std::to_string(write.seq) + " of session " + std::to_string(write.trial.session_id) +
+                          " is already a different trial (another trainer wrote to this session)");
+  }
 }
 
 void insert_trial(SqliteDb& db, const TrialWrite& write) {
@@ -31,6 +51,7 @@ void insert_trial(SqliteDb& db, const TrialWrite& write) {
       .bind(11, t.started)
       .bind(12, t.finished)
       .run();
+  if (sqlite3_changes(db.raw()) == 0) require_same_trial(db, write);
   if (t.progress_after) update_progress(db, t.session_id, *t.progress_after);
 }
 

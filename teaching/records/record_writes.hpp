@@ -1,7 +1,8 @@
 #pragma once
 // The SQL that writes learner records. Each function runs inside the caller's transaction, so the store
 // decides what is atomic (a trial and its resume point go together). Pending writes are idempotent: a
-// replayed trial with an existing (session, seq) is ignored, a diagnosis or curriculum of an existing
+// replayed trial with an existing (session, seq) is ignored when it is the same trial (a different one
+// fails: two trainers wrote to one session), a diagnosis or curriculum of an existing
 // (session, round) is replaced with the same content.
 #include <cstdint>
 #include <string_view>

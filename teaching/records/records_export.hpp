@@ -3,6 +3,8 @@
 // the review summary, every trial with its trajectory-file document embedded as JSON, diagnoses by round
 // and curricula with their drills. Deterministic: same database, same bytes.
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "engine/core/json_file.hpp"
 #include "teaching/records/learner_store.hpp"
@@ -12,10 +14,17 @@ namespace sc::records {
 inline constexpr std::string_view kExportFormat = "skillcoach-records";
 inline constexpr int kExportVersion = 1;
 
-Json export_records(const LearnerStore& store);
+struct RecordsExport {
+  Json doc;
+  std::size_t trials = 0;             // trials in `doc`
+  std::vector<std::string> problems;  // one line per damaged row left out, naming the database and the row
+};
+
+// Every readable record; rows whose stored JSON is damaged are left out and listed in `problems`.
+RecordsExport export_records(const LearnerStore& store);
 
 // Opens `data_dir` read-only and writes the export to `out` atomically; throws sc::InputError (missing,
-// damaged, foreign or newer database; unwritable output). Returns the number of trials exported.
-std::size_t export_database(const std::filesystem::path& data_dir, const std::filesystem::path& out);
+// damaged, foreign or newer database; unwritable output).
+RecordsExport export_database(const std::filesystem::path& data_dir, const std::filesystem::path& out);
 
 }  // namespace sc::records

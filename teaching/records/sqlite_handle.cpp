@@ -161,4 +161,33 @@ void SqliteTransaction::commit() {
   committed_ = true;
 }
 
+// Plain words for the storage faults a learner may meet; anything else keeps SQLite's own text.
+std::string describe_storage_error(const SqliteError& e) {
+  switch (e.primary_code()) {
+    case SQLITE_FULL: return "the disk or the database is full";
+    case SQLITE_READONLY: return "the database is read-only";
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED: return "the database is locked by another program";
+    case SQLITE_IOERR: return std::string("disk I/O error (") + e.what() + ")";
+    case SQLITE_CANTOPEN:
+    case SQLITE_PERM: return "the database file cannot be opened for writing";
+    default: return e.what();
+  }
+}
+
+// Faults that go away by themselves or when the user frees space / fixes permissions; anything else
+// (e.g. a missing table) needs the database repaired, so promising a retry would mislead.
+bool is_storage_fault(const SqliteError& e) {
+  switch (e.primary_code()) {
+    case SQLITE_FULL:
+    case SQLITE_READONLY:
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+    case SQLITE_IOERR:
+    case SQLITE_CANTOPEN:
+    case SQLITE_PERM: return true;
+    default: return false;
+  }
+}
+
 }  // namespace sc::records

@@ -99,4 +99,11 @@ class SqliteTransaction {
 // Throws SqliteError for `code` unless it is SQLITE_OK/ROW/DONE; `db` supplies the message (may be null).
 void check_sqlite(sqlite3* db, int code, std::string_view what);
 
+// Plain words for the storage faults a learner may meet (disk full, read-only, locked, ...); anything
+// else keeps SQLite's own text.
+std::string describe_storage_error(const SqliteError& e);
+// Faults that pass by themselves or once the user frees space or fixes permissions; anything else (e.g. a
+// missing table) needs the database repaired, so a retry must not be promised.
+bool is_storage_fault(const SqliteError& e);
+
 }  // namespace sc::records

@@ -145,8 +145,12 @@ std::string html_escape(std::string_view text) {
 }
 
 std::string csv_field(std::string_view text) {
-  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
-  std::string out = "\"";
+  // A cell starting with = + - @ (or tab/CR) runs as a formula in a spreadsheet, and a device name is
+  // whatever the gamepad reports: such text gets a leading apostrophe and quotes (OWASP's CSV injection
+  // advice), so it shows as text. Numbers are written elsewhere and keep their minus sign.
+  const bool formula = !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos;
+  if (!formula && text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string out = formula ? "\"'" : "\"";
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
 }

@@ -45,6 +45,7 @@ std::string report_html(const std::string& learner, const std::vector<SessionRep
 
 std::string base64(std::string_view bytes);
 std::string html_escape(std::string_view text);
+// RFC 4180 quoting; text a spreadsheet would run as a formula is neutralised with a leading apostrophe.
 std::string csv_field(std::string_view text);
 
 }  // namespace sc::review

@@ -37,15 +37,19 @@ SessionRecord load_session_record(const records::LearnerStore& store, std::int64
 }
 
 std::vector<std::int64_t> learner_session_ids(const records::LearnerStore& store, std::string_view learner) {
+  // A few names help with a typo; the whole list of a big class would make a 10 kB error line.
+  constexpr std::size_t kNamesShown = 5;
   std::string names;
+  std::size_t others = 0;
   for (const auto& overview : store.list_learners()) {
     if (overview.name == learner) {
       std::vector<std::int64_t> ids;
       for (const auto& s : overview.sessions) ids.push_back(s.session.id);
       return ids;
     }
-    names += (names.empty() ? "" : ", ") + overview.name;
+    if (others++ < kNamesShown) names += (names.empty() ? "" : ", ") + overview.name;
   }
+  if (others > kNamesShown) names += " and " + std::to_string(others - kNamesShown) + " more";
   throw InputError(store.database_path().string(), "has no learner '" + std::string(learner) + "' (learners: " +
                                                        (names.empty() ? "none" : names) + ")");
 }

@@ -1,12 +1,11 @@
 #include "teaching/skills/model_file.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <system_error>
 
 #include "engine/core/atomic_file.hpp"
 #include "engine/core/error.hpp"
+#include "engine/core/input_file.hpp"
 
 namespace sc {
 
@@ -16,6 +15,7 @@ constexpr char kMagic[8] = {'S', 'C', 'M', 'O', 'D', 'E', 'L', '\0'};
 constexpr std::uint32_t kMaxNameLength = 256;
 constexpr std::uint32_t kMaxRank = 4;
 constexpr std::int64_t kMaxElements = std::int64_t{1} << 28;
+constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{1} << 31;  // kMaxElements floats and then some
 
 std::uint64_t fnv1a(const char* data, std::size_t size) {
   std::uint64_t h = 1469598103934665603ull;
@@ -93,13 +93,9 @@ void write_model_file(const std::filesystem::path& file, const ModelFileContents
 
 ModelFileContents read_model_file(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(name, "no such model file");
-  if (std::filesystem::is_directory(file, ec)) throw InputError(name, "is a directory, not a model file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(name, "model file cannot be read");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(name, "read error");
+  std::error_code ec;  // the non-throwing form: a directory we may not search is not an exception
+  if (!std::filesystem::exists(file, ec) && !ec) throw InputError(name, "no such model file");
+  const std::string bytes = read_input_file(file, kMaxModelFileBytes);
 
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
     throw InputError(name, "not a SkillCoach model file (wrong magic bytes)");

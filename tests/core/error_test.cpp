@@ -11,4 +11,12 @@ TEST(InputError, NamesWhereAndWhatOnOneLine) {
 
 TEST(OneLine, StripsTrailingSpaceAndTabs) { EXPECT_EQ(one_line("a\tb\n"), "a b"); }
 
+// A file name or JSON string with terminal escapes must not drive the user's terminal.
+TEST(OneLine, ShowsOtherControlBytesAsText) {
+  EXPECT_EQ(one_line("trial\x1b[2J.json"), "trial\\x1b[2J.json");
+  EXPECT_EQ(one_line(std::string("a\0b\x7f", 4)), "a\\x00b\\x7f");
+  InputError e("bad\x07name.json", "not valid JSON");
+  EXPECT_STREQ(e.what(), "bad\\x07name.json: not valid JSON");
+}
+
 }  // namespace sc

@@ -26,7 +26,7 @@ void review_and_export(const LearnerStore& store) {
       (void)store.curricula_of_session(id);
     }
   }
-  sc::write_json_file(sc::fuzz::scratch_dir() / "export.json", export_records(store));  // as export_database
+  sc::write_json_file(sc::fuzz::scratch_dir() / "export.json", export_records(store).doc);  // as export_database
 }
 
 void record_one_trial(LearnerStore& store) {

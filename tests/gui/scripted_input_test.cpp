@@ -197,6 +197,27 @@ TEST(ScriptedGui, BadScriptIsOneErrorLineNamingTheFileAndExit2) {
   EXPECT_NE(missing.output.find("no_such_script.json"), std::string::npos) << missing.output;
 }
 
+// Nested repeats: too deep crashed the reader (stack and memory), and 1000 x 1000 x 1000 empty passes
+// ran for ever without adding a step. Both must be one error line, within a time limit.
+TEST(ScriptedGui, DeepOrHugeRepeatsAreRefusedQuickly) {
+  const fs::path dir = fresh_dir("repeats");
+  std::string deep = R"({"steps":[)";
+  for (int i = 0; i < 30000; ++i) deep += R"({"repeat":1,"steps":[)";
+  for (int i = 0; i < 30000; ++i) deep += "]}";
+  deep += "]}";
+  const std::string wide =
+      R"({"steps":[{"repeat":1000,"steps":[{"repeat":1000,"steps":[{"repeat":1000,"steps":[]}]}]}]})";
+  const std::pair<std::string, std::string> cases[] = {{"deep.json", deep}, {"wide.json", wide}};
+  for (const auto& [name, text] : cases) {
+    test::write_bytes(dir / name, text);
+    const auto run = test::run_skillcoach("--data-dir '" + dir.string() + "' --script '" + (dir / name).string() + "'",
+                                          "timeout 60 env SDL_VIDEODRIVER=offscreen");
+    EXPECT_EQ(run.exit_code, 2) << name << ": " << run.output.substr(0, 300);
+    EXPECT_EQ(run.output.rfind("skillcoach: error: " + (dir / name).string() + ": $.steps[0]", 0), 0u) << run.output.substr(0, 300);
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output.substr(0, 300);
+  }
+}
+
 TEST(ScriptedGui, AScreenThatNeverShowsFailsTheRunWithExit1) {
   const fs::path dir = fresh_dir("timeout");
   const test::CommandResult run = run_script(script_file("wrong_screen.json"), dir);

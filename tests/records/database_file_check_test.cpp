@@ -1,6 +1,9 @@
 // A damaged, foreign or newer database must be refused with one clear line and never be modified.
 #include "teaching/records/database_file_check.hpp"
 
+#include <signal.h>
+#include <sys/resource.h>
+
 #include <gtest/gtest.h>
 
 #include "teaching/records/learner_store.hpp"
@@ -62,6 +65,31 @@ TEST(DatabaseFileCheck, RefusesATruncatedDatabase) {
   expect_refused(dir, "not a whole number of 4096-byte pages");
   test::write_bytes(file, bytes.substr(0, 4 * 4096));  // whole pages, but fewer than the header counts
   expect_refused(dir, "truncated: the header counts");
+}
+
+// A checkpoint that failed on a full disk writes page 1 (which counts every page) and then cannot grow the
+// file; the pages stay in the write-ahead log, so the database is whole and must be accepted.
+TEST(DatabaseFileCheck, AcceptsAMainFileShortOfPagesTheLogHolds) {
+  const auto dir = fresh_dir("checkpoint-full");
+  const auto file = dir / "skillcoach.db";
+  const int code = test::run_in_child([&] {
+    signal(SIGXFSZ, SIG_IGN);  // the write past the limit fails with EFBIG, as on a full disk
+    LearnerStore store(dir);
+    const auto id = store.begin_session(test::sample_session());
+    for (int i = 0; i < 20; ++i) store.record_trial(test::sample_trial(id, i));
+    rlimit limit{};
+    getrlimit(RLIMIT_FSIZE, &limit);
+    limit.rlim_cur = std::filesystem::file_size(file);
+    setrlimit(RLIMIT_FSIZE, &limit);
+    SqliteDb other(file, SqliteDb::Mode::ReadWriteCreate);
+    EXPECT_THROW(other.exec("PRAGMA wal_checkpoint(TRUNCATE)"), SqliteError);
+    return 0;
+  });
+  ASSERT_EQ(code, 0);
+  ASSERT_GT(std::filesystem::file_size(dir / "skillcoach.db-wal"), 0u);
+  EXPECT_EQ(test::error_of([&] { check_database_file(file, current_schema_version()); }), "(no error)");
+  LearnerStore store(dir);
+  EXPECT_EQ(store.trials_of_session(1).size(), 20u);
 }
 
 TEST(DatabaseFileCheck, RefusesADamagedPage) {

@@ -202,6 +202,63 @@ TEST(LearnerStoreFaults, LockedDatabaseQueuesInOrderAndCatchesUp) {
   expect_trials(store, id, 4);
 }
 
+// A data directory behind one we may not search: one line for the trainer and the export, never a
+// filesystem exception (which would end the program with exit code 1).
+TEST(LearnerStoreFaults, ADataDirectoryWeMayNotReachIsOneLine) {
+  const auto dir = dir_for_child("unsearchable");
+  std::filesystem::create_directories(dir / "locked" / "data");
+  std::filesystem::permissions(dir / "locked", std::filesystem::perms::none);
+  const int code = test::run_in_child(
+      [&] {
+        const auto data = dir / "locked" / "data";
+        const auto trainer = test::error_of([&] { LearnerStore store(data); });
+        EXPECT_TRUE(contains(trainer, "Permission denied")) << trainer;
+        const auto review = test::error_of([&] { LearnerStore store(data, StoreOptions{.read_only = true}); });
+        EXPECT_TRUE(contains(review, data.string() + "/skillcoach.db: cannot be read: Permission denied")) << review;
+        return 0;
+      },
+      /*as_nobody=*/true);
+  EXPECT_EQ(code, 0);
+  std::filesystem::permissions(dir / "locked", std::filesystem::perms::owner_all);
+  std::filesystem::remove_all(dir);
+}
+
+// A trial number already taken by a different trial (a second trainer on the session) is never merged
+// away: the trial stays pending and the message says why.
+TEST(LearnerStoreFaults, ATrialNumberTakenByAnotherTrialIsNotReportedStored) {
+  const auto dir = fresh_dir("seq-conflict");
+  LearnerStore store(dir);
+  const auto id = store.begin_session(sample_session());
+  ASSERT_TRUE(store.record_trial(sample_trial(id, 0)).stored);
+  {
+    SqliteDb other(store.database_path(), SqliteDb::Mode::ReadWriteCreate);
+    other.exec("INSERT INTO trials(session_id, seq, kind, round, task, scenario, trajectory, device, started, finished)"
+               " VALUES(" + std::to_string(id) + ", 2, 'pretest', 1, 'parking', '{}', '{}', 'mouse', 'a', 'b')");
+  }
+  const auto clash = store.record_trial(sample_trial(id, 1));
+  EXPECT_FALSE(clash.stored);
+  EXPECT_TRUE(contains(clash.message, "trial 2 of session 1 is already a different trial")) << clash.message;
+  EXPECT_TRUE(contains(clash.message, "retrying cannot help")) << clash.message;
+  EXPECT_EQ(read_spill_file(store.spill_path()).size(), 1u);
+  // Once the other trial is gone, the pending one is stored under its number.
+  SqliteDb(store.database_path(), SqliteDb::Mode::ReadWriteCreate).exec("DELETE FROM trials WHERE seq = 2");
+  EXPECT_TRUE(store.flush().stored);
+  expect_trials(store, id, 2);
+}
+
+// A database missing a table is not a passing storage fault: no promise of a retry.
+TEST(LearnerStoreFaults, AMissingTableIsNotCalledRetryable) {
+  const auto dir = fresh_dir("missing-table");
+  LearnerStore store(dir);
+  const auto id = store.begin_session(sample_session());
+  SqliteDb(store.database_path(), SqliteDb::Mode::ReadWriteCreate).exec("DROP TABLE drills");
+  const auto result = store.save_curriculum({id, 1, "adaptive", "[]", {{0, "[0]", "{}"}}, "t"});
+  EXPECT_FALSE(result.stored);
+  EXPECT_TRUE(contains(result.message, "no such table: drills")) << result.message;
+  EXPECT_FALSE(contains(result.message, "will retry")) << result.message;
+  EXPECT_TRUE(store.pending_spilled());
+}
+
 TEST(LearnerStoreFaults, UnreadableSpillFileIsMovedAsideNotOverwritten) {
   const auto dir = fresh_dir("bad-spill");
   { LearnerStore store(dir); }

@@ -182,6 +182,11 @@ TEST(LearnerStore, RejectsInvalidRecordsWithoutQueueingThem) {
   EXPECT_EQ(test::error_of([&] { store.record_trial(sample_trial(id + 99, 0)); }),
             store.database_path().string() + ": unknown session id " + std::to_string(id + 99));
   EXPECT_EQ(test::error_of([&] { store.begin_session(sample_session("")); }), "learner record: learner name is empty");
+  // Blank names (the schema's CHECK trims spaces only) and control bytes: a plain message, not SQLite's text.
+  EXPECT_EQ(test::error_of([&] { store.begin_session(sample_session("\t\t")); }), "learner record: learner name is blank");
+  EXPECT_EQ(test::error_of([&] { store.ensure_learner("   ", "t"); }), "learner record: learner name is blank");
+  EXPECT_EQ(test::error_of([&] { store.ensure_learner("Ada\x1b[2J", "t"); }),
+            "learner record: learner name contains a control character");
   EXPECT_EQ(store.pending_count(), 0u);
   EXPECT_TRUE(store.trials_of_session(id).empty());
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "teaching/records/sqlite_handle.hpp"
 #include "tests/records/records_test_support.hpp"
 
 namespace sc::records {
@@ -33,7 +34,7 @@ TEST(RecordsExport, EmbedsTrajectoriesAsJsonAndKeepsEveryRecord) {
   const auto dir = test::fresh_dir("export");
   const auto id = fill_fixture(dir);
   const LearnerStore store(dir, StoreOptions{.read_only = true});
-  const Json doc = export_records(store);
+  const Json doc = export_records(store).doc;
   EXPECT_EQ(doc["format"], "skillcoach-records");
   EXPECT_EQ(doc["schema_version"], store.schema_version());
   ASSERT_EQ(doc["learners"].size(), 2u);
@@ -58,13 +59,13 @@ TEST(RecordsExport, EmbedsTrajectoriesAsJsonAndKeepsEveryRecord) {
   EXPECT_EQ(session["diagnoses"][0]["expertise"], Json::parse("[0.25,0.75]"));
   EXPECT_EQ(session["curricula"][0]["drills"][0]["content"]["ghost"], Json::parse("[[0,1]]"));
   // Deterministic: exporting twice gives the same document.
-  EXPECT_EQ(export_records(store).dump(), doc.dump());
+  EXPECT_EQ(export_records(store).doc.dump(), doc.dump());
 }
 
 TEST(RecordsExport, WritesTheFileAndRefusesAMissingOrDamagedDatabase) {
   const auto dir = test::fresh_dir("export-file");
   fill_fixture(dir / "data");
-  EXPECT_EQ(export_database(dir / "data", dir / "out.json"), 3u);
+  EXPECT_EQ(export_database(dir / "data", dir / "out.json").trials, 3u);
   EXPECT_EQ(read_json_file(dir / "out.json")["learners"][0]["name"], "Ada");
   EXPECT_EQ(test::error_of([&] { export_database(dir / "nowhere", dir / "x.json"); }),
             (dir / "nowhere" / "skillcoach.db").string() + ": no such database");
@@ -74,6 +75,39 @@ TEST(RecordsExport, WritesTheFileAndRefusesAMissingOrDamagedDatabase) {
   EXPECT_NE(test::error_of([&] { export_database(dir / "garbage", dir / "y.json"); }).find("not a SQLite database"),
             std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "y.json"));
+}
+
+// One damaged row (its JSON no longer parses) is left out and named; everything else is exported.
+TEST(RecordsExport, ADamagedRowIsNamedAndTheRestExported) {
+  const auto dir = test::fresh_dir("export-damaged");
+  const auto id = fill_fixture(dir / "data");
+  {
+    SqliteDb raw(dir / "data" / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate);
+    raw.exec("PRAGMA ignore_check_constraints = ON; UPDATE trials SET trajectory = '{\"cut' WHERE seq = 2");
+  }
+  const auto result = export_database(dir / "data", dir / "out.json");
+  EXPECT_EQ(result.trials, 2u);
+  ASSERT_EQ(result.problems.size(), 1u);
+  const auto& problem = result.problems[0];
+  EXPECT_EQ(problem.rfind((dir / "data" / "skillcoach.db").string() + ": session " + std::to_string(id) +
+                              ", trial 2 left out: stored JSON: not valid JSON", 0), 0u) << problem;
+  const Json doc = read_json_file(dir / "out.json");
+  const Json& trials = doc["learners"][0]["sessions"][0]["trials"];
+  ASSERT_EQ(trials.size(), 2u);
+  EXPECT_EQ(trials[0]["seq"], 1);
+  EXPECT_EQ(trials[1]["seq"], 3);
+}
+
+// --out naming the database (or its log) would overwrite the learner's records with the export.
+TEST(RecordsExport, RefusesToWriteOverTheDatabaseItself) {
+  const auto dir = test::fresh_dir("export-over-db");
+  fill_fixture(dir);
+  const auto db = dir / "skillcoach.db";
+  const auto before = test::file_bytes(db);
+  const auto message = test::error_of([&] { export_database(dir, db); });
+  EXPECT_NE(message.find("is the learner database's own file"), std::string::npos) << message;
+  EXPECT_EQ(test::file_bytes(db), before);
+  EXPECT_NE(test::error_of([&] { export_database(dir, dir / "." / "skillcoach.db-wal"); }).find("own file"), std::string::npos);
 }
 
 }  // namespace

@@ -94,5 +94,30 @@ TEST(DiagnoseCommand, TrialOfAnotherTaskIsAnInputErrorNamingTheFile) {
   EXPECT_NE(r.output.find(trial.string() + ": $.task: expected \"writing\""), std::string::npos) << r.output;
 }
 
+// The second of three files is bad: the message names that file and the whole JSON path, also inside the
+// scenario.
+TEST(DiagnoseCommand, ABadFileAmongSeveralIsNamedWithItsFullJsonPath) {
+  const char* data = std::getenv("SKILLCOACH_TEST_DATA");
+  const auto good = std::filesystem::path(data ? data : "tests") / "parking" / "data" / "expert_trial.json";
+  Json doc = read_json_file(good);
+  ASSERT_GE(doc.at("actions").size(), 2u);
+  doc["actions"][1][0] = 1.5;
+  const auto bad_action = scratch("bad_action.json");
+  write_json_file(bad_action, doc);
+  const Result r = run("diagnose --task parking " + good.string() + " " + bad_action.string() + " " + good.string(),
+                       "bad_action");
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("skillcoach: error: " + bad_action.string() + ": $.actions[1][0]: value 1.5 is outside [-1, 1]"),
+            std::string::npos) << r.output;
+  doc = read_json_file(good);
+  doc["scenario"]["heading0"] = "north";
+  const auto bad_scenario = scratch("bad_scenario.json");
+  write_json_file(bad_scenario, doc);
+  const Result s = run("diagnose --task parking " + good.string() + " " + bad_scenario.string(), "bad_scenario");
+  EXPECT_EQ(s.status, 2) << s.output;
+  EXPECT_NE(s.output.find(bad_scenario.string() + ": $.scenario.heading0: expected a number"), std::string::npos)
+      << s.output;
+}
+
 }  // namespace
 }  // namespace sc
