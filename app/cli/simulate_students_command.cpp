@@ -3,9 +3,7 @@
 // DIR/students.json (every number), DIR/students.png (bar chart of mean reward and success rate, ± s.e. over
 // the sets) and DIR/students_curve.png (the appendix learning curve).
 #include <CLI/CLI.hpp>
-#include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/experiment_progress.hpp"
 #include "app/cli/simulate_writing_students.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/render/bar_chart_image.hpp"
@@ -41,20 +40,6 @@ struct SimulateArgs {
   std::string task = "parking";
   WritingSimulateArgs writing;  // --task writing: the shared options are copied in, plus the writing-only ones
 };
-
-// One updating line on a terminal; otherwise one line per finished phase (logs stay short).
-ExperimentProgress progress_printer() {
-  const bool tty = isatty(STDERR_FILENO) != 0;
-  const auto start = std::chrono::steady_clock::now();
-  return [tty, start](std::string_view phase, int done, int total) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (tty)
-      std::fprintf(stderr, "\r\033[K[%6.1f s] %.*s %d/%d%s", seconds, static_cast<int>(phase.size()), phase.data(), done,
-                   total, done == total ? "\n" : "");
-    else if (done == total)
-      std::fprintf(stderr, "[%6.1f s] %.*s done\n", seconds, static_cast<int>(phase.size()), phase.data());
-  };
-}
 
 BarChartFigure chart_of(const StudentExperimentResult& result) {
   BarChartFigure figure;
