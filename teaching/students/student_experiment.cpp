@@ -29,12 +29,9 @@ void report(const ExperimentProgress& progress, const std::string& phase, int do
   if (progress) progress(phase, done, total);
 }
 
-// `count` fresh scenarios of the region, none equal to a pool scenario.
-std::vector<ParkingScenario> evaluation_set(const std::vector<ExpertDemo>& pool, const StudentExperimentConfig& config,
+// `count` fresh scenarios of the region, none equal to a pool scenario (`taken`: the pool's, parsed once).
+std::vector<ParkingScenario> evaluation_set(std::vector<ParkingScenario> taken, const StudentExperimentConfig& config,
                                             int set) {
-  std::vector<ParkingScenario> taken;
-  for (std::size_t i = 0; i < pool.size(); ++i)
-    taken.push_back(parse_parking_scenario(JsonView(pool[i].scenario, "pool scenario " + std::to_string(i))));
   std::vector<ParkingScenario> out;
   const std::uint64_t seed = derived_seed(config.seed, kEvaluationSet, static_cast<std::uint64_t>(set));
   for (int i = 0; static_cast<int>(out.size()) < config.scenarios_per_set; ++i) {
@@ -226,7 +223,10 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
   result.diagnosis_scenarios = select_diverse_scenarios(demo_skills(pool), config.diagnosis_scenarios).scenarios();
   const StudentDrives drives = plan_student_drives(config, result, progress);
   std::vector<std::vector<ParkingScenario>> sets;
-  for (int k = 0; k < config.evaluation_sets; ++k) sets.push_back(evaluation_set(pool, config, k));
+  std::vector<ParkingScenario> pool_scenarios;
+  for (std::size_t i = 0; i < pool.size(); ++i)
+    pool_scenarios.push_back(parse_parking_scenario(JsonView(pool[i].scenario, "pool scenario " + std::to_string(i))));
+  for (int k = 0; k < config.evaluation_sets; ++k) sets.push_back(evaluation_set(pool_scenarios, config, k));
 
   report(progress, "training fully trained", 0, 1);
   const std::size_t reference_stream = config.students.size();
