@@ -32,6 +32,7 @@ struct LearnOptions {
   int rounds = 1;
   int weak_skills = 3;
   int drills_per_weak_skill = 2;
+  std::string lot = "auto";  // parking: auto (study corner for a first session), study-corner, whole-lot
   unsigned long long seed = 20221128;
   int trial_delay_ms = 0;
 };
@@ -64,9 +65,9 @@ void print_plan(const TrainingSession& s) {
 // "(drilled)" only for skills practised in this round, with how many trials.
 void print_skills(const TrainingSession& s, const RoundSummary& summary) {
   for (const SkillChange& c : summary.skills) {
-    if (!c.seen && !c.targeted) continue;
+    if (!c.seen && !c.drilled) continue;
     std::printf("  skill %d %s: %.3f -> %.3f", c.skill, s.kit().describe_skill(c.skill).c_str(), c.before, c.after);
-    if (c.targeted) std::printf(" (drilled, %d trial%s)", c.practice_trials, c.practice_trials == 1 ? "" : "s");
+    if (c.drilled) std::printf(" (drilled, %d trial%s)", c.practice_trials, c.practice_trials == 1 ? "" : "s");
     std::printf("\n");
   }
 }
@@ -85,29 +86,48 @@ int report_unsaved(records::LearnerStore& store) {
   return kExitRecordsNotSaved;
 }
 
+// The new session's settings; the lot is the learner's first-session default unless --lot names one.
+SessionSettings new_settings(const LearnOptions& o, const records::LearnerStore& store) {
+  SessionSettings settings;
+  settings.learner = o.learner;
+  settings.device = o.device;
+  settings.condition = parse_condition(o.condition);
+  settings.pretest_count = o.pretest;
+  settings.eval_count = o.eval;
+  settings.seed = o.seed;
+  settings.weak_skills = o.weak_skills;
+  settings.drills_per_weak_skill = o.drills_per_weak_skill;
+  if (o.task == "parking")
+    settings.goal_region = o.lot == "auto" ? first_session_goal_region(store.session_count(o.learner, "parking"))
+                                           : parse_goal_region(o.lot, "--lot");
+  return settings;
+}
+
+std::string lot_words(const SessionSettings& settings) {
+  if (!settings.goal_region) return "";
+  return *settings.goal_region == GoalRegion::StudyCorner ? " on the study corner (goals in spots 12-14)"
+                                                          : " on the whole lot";
+}
+
 int run(const LearnOptions& o) {
-  const auto kit = make_task_kit(o.task);
-  if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
+  if (o.task != "parking" && o.task != "writing") throw InputError("--task", "'" + o.task + "' is not parking or writing");
+  if (o.task == "writing" && o.lot != "auto") throw InputError("--lot", "is a parking setting (writing has no lot)");
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
+  const auto point = store.find_unfinished_session(o.learner, o.task);
+  const SessionSettings settings = point ? settings_of_session(point->session) : new_settings(o, store);
+  const auto kit = make_task_kit(o.task, {}, settings.lot());
+  if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   std::unique_ptr<TrainingSession> session;
-  if (const auto point = store.find_unfinished_session(o.learner, kit->task())) {
+  if (point) {
     session = TrainingSession::resume(*kit, store, *point, records::utc_timestamp_now);
-    std::printf("resumed session %lld at round %d, %s, item %d\n", static_cast<long long>(session->session_id()),
-                session->round(), std::string(records::to_string(session->phase())).c_str(), session->item_index());
+    std::printf("resumed session %lld%s at round %d, %s, item %d\n", static_cast<long long>(session->session_id()),
+                lot_words(session->settings()).c_str(), session->round(), std::string(records::to_string(session->phase())).c_str(),
+                session->item_index());
     if (session->phase() != SessionPhase::Pretest && session->phase() != SessionPhase::Diagnosis) print_plan(*session);
   } else {
-    SessionSettings settings;
-    settings.learner = o.learner;
-    settings.device = o.device;
-    settings.condition = parse_condition(o.condition);
-    settings.pretest_count = o.pretest;
-    settings.eval_count = o.eval;
-    settings.seed = o.seed;
-    settings.weak_skills = o.weak_skills;
-    settings.drills_per_weak_skill = o.drills_per_weak_skill;
     session = std::make_unique<TrainingSession>(*kit, store, settings, records::utc_timestamp_now);
-    std::printf("started session %lld\n", static_cast<long long>(session->session_id()));
+    std::printf("started session %lld%s\n", static_cast<long long>(session->session_id()), lot_words(session->settings()).c_str());
   }
   std::fflush(stdout);
   ScriptedRunHooks hooks;
@@ -144,6 +164,10 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--weak-skills", o->weak_skills, "Ind. Drills / Adaptive: weakest skills drilled per round")
       ->capture_default_str();
   sub.add_option("--drills-per-skill", o->drills_per_weak_skill, "Ind. Drills / Adaptive: unique drills per weak skill")
+      ->capture_default_str();
+  sub.add_option("--lot", o->lot,
+                 "Parking goals: auto (the study corner for a learner's first parking session, then the whole lot), "
+                 "study-corner or whole-lot; recorded with the session")
       ->capture_default_str();
   sub.add_option("--rounds", o->rounds, "Adaptive rounds to play")->capture_default_str()->check(CLI::Range(1, 20));
   sub.add_option("--seed", o->seed, "Session seed")->capture_default_str();

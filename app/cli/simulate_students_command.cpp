@@ -115,12 +115,10 @@ LineChartFigure curve_chart_of(const StudentExperimentResult& result) {
   return figure;
 }
 
-// The kit whose pool supplies diagnosis scenarios and drills: the shipped whole-lot pool, or 100 expert
-// drives with goals in the study corner (planned here, ~3 s; seed 0 like the shipped pool).
+// The kit whose pool supplies diagnosis scenarios and drills: the shipped pool of the whole lot or of the
+// study corner.
 std::unique_ptr<TaskKit> experiment_kit(const SimulateArgs& args) {
-  if (!args.study_corner) return make_task_kit("parking", args.model);
-  ChosenExtractor chosen = choose_skill_extractor("parking", args.model);
-  return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice, plan_expert_drives(100, 0, GoalRegion::StudyCorner));
+  return make_task_kit("parking", args.model, args.study_corner ? GoalRegion::StudyCorner : GoalRegion::WholeLot);
 }
 
 StudentExperimentConfig config_of(const SimulateArgs& args) {

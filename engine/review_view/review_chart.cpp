@@ -72,10 +72,10 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
         const float length = static_cast<float>(-*s.values[r] / full) * (right - left);
         const float end = left + std::max(length, 2.0f * scale);
         dl.AddRectFilled({left, top}, {end, bottom}, skill_color_u32(s.skill, a), 2.0f);
-        if (r < s.targeted.size() && s.targeted[r])
+        if (r < s.drilled.size() && s.drilled[r])
           dl.AddRect({left - 1.0f, top - 1.0f}, {end + 1.0f, bottom + 1.0f}, IM_COL32(255, 255, 255, 255), 2.0f, 0,
                      2.0f * scale);
-        const bool drilled = r < s.targeted.size() && s.targeted[r];
+        const bool drilled = r < s.drilled.size() && s.drilled[r];
         const std::string value = number(*s.values[r]) + (drilled ? "   drilled" : "");
         dl.AddText({end + 6.0f * scale, y + (bar - fs) * 0.5f}, drilled ? kText : kMuted, value.c_str());
       } else {

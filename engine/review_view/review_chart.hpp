@@ -15,7 +15,7 @@ struct ChartSkill {
   int skill = 0;
   std::string label;                           // "reversing while turning right"
   std::vector<std::optional<double>> values;   // E_m (<= 0) per round; empty: no evidence that round
-  std::vector<bool> targeted;                  // per round: drilled
+  std::vector<bool> drilled;                   // per round: practised in a played drill or skill item
 };
 
 struct ExpertiseChart {

@@ -349,4 +349,16 @@ Curriculum make_curriculum(StudyCondition condition, const CurriculumInputs& inp
   return out;
 }
 
+std::map<int, int> practice_trials_per_skill(const Curriculum& curriculum, const std::vector<int>& played) {
+  std::map<int, int> out;
+  for (int index : played) {
+    if (index < 0 || index >= static_cast<int>(curriculum.items.size()))
+      throw InputError("practice", "item " + std::to_string(index) + " is not in the round's curriculum");
+    const PracticeItem& item = curriculum.items[static_cast<std::size_t>(index)];
+    if (item.kind != PracticeKind::Drill && item.kind != PracticeKind::Skill) continue;
+    for (int m : item.target_skills) ++out[m];
+  }
+  return out;
+}
+
 }  // namespace sc

@@ -29,6 +29,7 @@
 // added while the total is below the budget, the crossing one only if that lands at least as close to it,
 // and Ind. Drills repeats its drills until the budget is filled.
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,11 @@ struct Curriculum {
   int total_steps() const;
   int trials() const;  // sum of the items' sessions
 };
+
+// How many played practice trials targeted each skill, `played` holding the item index of each played
+// trial: the target_skills of Drill and Skill items. Whole trajectories and time slices practise no skill
+// on their own, so they count for none. What "(drilled, N trials)" and the review's outlines show.
+std::map<int, int> practice_trials_per_skill(const Curriculum& curriculum, const std::vector<int>& played);
 
 struct CurriculumConfig {
   DrillConfig drills = DrillConfig::parking();

@@ -77,8 +77,15 @@ std::vector<DrillPlan> DrillBuilder::for_targets(const std::vector<int>& targets
   std::vector<std::vector<int>> used;
   for (int target : targets) {
     std::vector<SkillNgram> grams;
-    if (config_.distinct_ngrams) grams = ngrams_.most_frequent_containing(target, config_.drills_per_target, used);
-    if (grams.empty()) grams = ngrams_.most_frequent_containing(target, config_.drills_per_target);
+    const std::vector<SkillNgram> all = ngrams_.most_frequent_containing(target, config_.drills_per_target);
+    if (config_.distinct_ngrams) {
+      grams = ngrams_.most_frequent_containing(target, config_.drills_per_target, used);
+      // Fewer unused n-grams than drills (a small lot uses few skill sequences): the most frequent ones
+      // again, each cut from freshly drawn expert segments, so every target still gets N_drills drills.
+      for (std::size_t i = 0; grams.size() < static_cast<std::size_t>(config_.drills_per_target) && !all.empty(); ++i)
+        grams.push_back(all[i % all.size()]);
+    }
+    if (grams.empty()) grams = all;
     for (const auto& g : grams) {
       out.push_back(project(g, target, rng));
       used.push_back(g.skills);

@@ -23,7 +23,9 @@ struct DrillConfig {
   int min_segment_length = 1;
   // Ours: when a weaker target already got an n-gram, a later target takes its next most frequent n-gram
   // instead, so the learner does not practise the same skill sequence twice (the study gave "unique
-  // drills"). Falls back to the most frequent ones when the target has no unused n-gram. false = literal.
+  // drills"). When the target has fewer unused n-grams than N_drills, its most frequent ones fill up (with
+  // freshly drawn segments, so the drills still differ): every target that occurs in some n-gram gets
+  // N_drills drills. false = literal.
   bool distinct_ngrams = true;
 
   static DrillConfig parking() { return {3, 1, 7, 1, 1, true}; }  // the paper's Parking values

@@ -371,6 +371,10 @@ std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_vie
   return std::nullopt;
 }
 
+int LearnerStore::session_count(std::string_view learner, std::string_view task) const {
+  return read([&](SqliteDb& db) { return query_session_count(db, learner, task); });
+}
+
 std::optional<SessionRow> LearnerStore::session(std::int64_t session_id) const {
   return read([&](SqliteDb& db) { return query_session(db, session_id); });
 }

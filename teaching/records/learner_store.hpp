@@ -81,6 +81,9 @@ class LearnerStore {
   // The newest unfinished session of `learner` for `task` (any task if empty), with pending writes applied.
   // A writable store claims the learner first (claim_learner), so two trainers never resume one session.
   std::optional<ResumePoint> find_unfinished_session(std::string_view learner, std::string_view task = {}) const;
+  // How many sessions of `task` the learner has begun (sessions are never pending: begin_session stores or
+  // throws).
+  int session_count(std::string_view learner, std::string_view task) const;
 
   // ---- instructor review (database content only) ----
   std::optional<SessionRow> session(std::int64_t session_id) const;

@@ -47,6 +47,13 @@ std::vector<SessionRow> query_unfinished_sessions(SqliteDb& db, std::string_view
   return out;
 }
 
+int query_session_count(SqliteDb& db, std::string_view learner, std::string_view task) {
+  auto stmt = db.prepare(
+      "SELECT count(*) FROM sessions s JOIN learners l ON l.id = s.learner_id WHERE l.name = ?1 AND s.task = ?2");
+  stmt.bind(1, learner).bind(2, task).step();
+  return static_cast<int>(stmt.column_int(0));
+}
+
 int query_trial_count(SqliteDb& db, std::int64_t session_id) {
   auto stmt = db.prepare("SELECT count(*) FROM trials WHERE session_id = ?1");
   stmt.bind(1, session_id).step();

@@ -14,6 +14,8 @@ namespace sc::records {
 std::optional<SessionRow> query_session(SqliteDb& db, std::int64_t session_id);
 // Unfinished sessions of a learner (for one task, or any task when `task` is empty), newest first.
 std::vector<SessionRow> query_unfinished_sessions(SqliteDb& db, std::string_view learner, std::string_view task);
+// Sessions of a learner for a task, finished or not (0 for an unknown learner).
+int query_session_count(SqliteDb& db, std::string_view learner, std::string_view task);
 int query_trial_count(SqliteDb& db, std::int64_t session_id);
 int query_last_seq(SqliteDb& db, std::int64_t session_id);  // 0 when the session has no trial yet
 std::vector<LearnerOverview> query_learners(SqliteDb& db);

@@ -3,21 +3,42 @@
 #include <algorithm>
 
 #include "engine/core/error.hpp"
+#include "teaching/curricula/curriculum_json.hpp"
 #include "teaching/expertise/expertise_json.hpp"
 
 namespace sc::review {
+namespace {
+
+// The skills the round's played practice drilled (none for a round without a stored curriculum).
+std::vector<int> drilled_in_round(const SessionRecord& record, int round) {
+  for (const records::CurriculumRecord& stored : record.curricula) {
+    if (stored.round != round) continue;
+    const std::string where = "session " + std::to_string(record.session.id) + " curriculum of round " +
+                              std::to_string(round);
+    const Json doc = parse_json_text(stored.items_json, where);
+    std::vector<int> played;
+    for (const records::StoredTrial* t : record.trials_of(records::TrialKind::Practice, round))
+      if (t->record.drill_index) played.push_back(*t->record.drill_index);
+    std::vector<int> out;
+    for (const auto& [skill, trials] : practice_trials_per_skill(curriculum_from_json(JsonView(doc, where)), played))
+      out.push_back(skill);
+    return out;
+  }
+  return {};
+}
+
+}  // namespace
 
 ExpertiseRounds expertise_rounds(const TaskKit& kit, const SessionRecord& record) {
   const int num_skills = kit.extractor().num_skills();
   ExpertiseRounds out;
   std::vector<ExpertiseEstimate> estimates;
-  std::vector<std::vector<int>> targets;
+  std::vector<std::vector<int>> drilled;
   for (const auto& d : record.diagnoses) {
     const std::string where = "session " + std::to_string(record.session.id) + " diagnosis of round " + std::to_string(d.round);
-    Json expertise, target;
+    Json expertise;
     try {
       expertise = Json::parse(d.expertise_json);
-      target = Json::parse(d.targets_json);
     } catch (const Json::exception& e) {
       throw InputError(where, std::string("is not JSON: ") + e.what());
     }
@@ -25,11 +46,9 @@ ExpertiseRounds expertise_rounds(const TaskKit& kit, const SessionRecord& record
     if (estimate.num_skills() != num_skills)
       throw InputError(where, "has " + std::to_string(estimate.num_skills()) + " skills, the " + kit.task() +
                                   " extractor has " + std::to_string(num_skills));
-    std::vector<int> t;
-    for (const auto& v : target) t.push_back(v.get<int>());
     out.rounds.push_back(d.round);
     estimates.push_back(std::move(estimate));
-    targets.push_back(std::move(t));
+    drilled.push_back(drilled_in_round(record, d.round));
   }
   for (int m = 0; m < num_skills; ++m) {
     SkillAcrossRounds skill;
@@ -40,7 +59,7 @@ ExpertiseRounds expertise_rounds(const TaskKit& kit, const SessionRecord& record
       const bool evidence = e.occurrences[static_cast<std::size_t>(m)] > 0;
       seen = seen || evidence;
       skill.expertise.push_back(evidence ? std::optional<double>(e.expertise[static_cast<std::size_t>(m)]) : std::nullopt);
-      skill.targeted.push_back(std::find(targets[r].begin(), targets[r].end(), m) != targets[r].end());
+      skill.drilled.push_back(std::find(drilled[r].begin(), drilled[r].end(), m) != drilled[r].end());
       if (evidence) out.lowest = std::min(out.lowest, e.expertise[static_cast<std::size_t>(m)]);
     }
     if (!seen) continue;

@@ -14,7 +14,7 @@ struct SkillAcrossRounds {
   int skill = 0;
   std::string description;                  // kit.describe_skill
   std::vector<std::optional<double>> expertise;  // per round (index as `rounds`); empty: no evidence that round
-  std::vector<bool> targeted;               // per round: chosen for drilling
+  std::vector<bool> drilled;                // per round: practised in a played drill or skill item
 };
 
 struct ExpertiseRounds {

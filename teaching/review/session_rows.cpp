@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "engine/core/error.hpp"
+#include "teaching/sessions/session_settings.hpp"
+
 namespace sc::review {
 namespace {
 
@@ -35,6 +38,16 @@ std::string format_number(double value, bool sign) {
   return text;
 }
 
+std::string lot_of(const records::SessionRow& session) {
+  try {
+    const std::optional<GoalRegion> region = settings_of_session(session).goal_region;
+    if (!region) return session.task == "parking" ? "whole lot" : "";  // recorded before lots existed
+    return *region == GoalRegion::StudyCorner ? "study corner" : "whole lot";
+  } catch (const InputError&) {
+    return "settings unreadable";  // the list still shows the session; opening it names the problem
+  }
+}
+
 }  // namespace
 
 std::string_view column_title(SessionColumn column) {
@@ -58,6 +71,7 @@ std::vector<SessionListRow> session_rows(const std::vector<records::LearnerOverv
       row.session_id = summary.session.id;
       row.learner = learner.name;
       row.task = summary.session.task;
+      row.lot = lot_of(summary.session);
       row.date = summary.session.started;
       row.condition = summary.session.condition;
       row.pretest_mean = summary.pretest_mean;
@@ -95,6 +109,7 @@ std::string cell_text(const SessionListRow& row, SessionColumn column) {
     if (date.size() > 10 && date[10] == 'T') date[10] = ' ';
     return date;
   }
+  if (column == SessionColumn::Task && !row.lot.empty()) return row.task + ", " + row.lot;
   return text_of(row, column);
 }
 

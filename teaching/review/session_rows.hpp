@@ -16,6 +16,7 @@ struct SessionListRow {
   std::int64_t session_id = 0;
   std::string learner;
   std::string task;
+  std::string lot;   // parking: "study corner" or "whole lot" (the session's goal_region); writing: empty
   std::string date;  // the session's start, ISO-8601 UTC as stored
   std::string condition;
   std::optional<double> pretest_mean;
@@ -41,7 +42,7 @@ std::vector<SessionListRow> session_rows(const std::vector<records::LearnerOverv
 // session id order.
 void sort_session_rows(std::vector<SessionListRow>& rows, SessionColumn column, bool ascending);
 
-// The cell as text: names as they are, the date as "2024-05-01 10:00", scores with 2 decimals ("-3.12";
+// The cell as text: names as they are (a parking task with its lot: "parking, study corner"), the date as "2024-05-01 10:00", scores with 2 decimals ("-3.12";
 // improvement signed "+1.90"), "-" when missing.
 std::string cell_text(const SessionListRow& row, SessionColumn column);
 

@@ -19,11 +19,13 @@ void SessionSettings::validate() const {
 }
 
 Json settings_to_json(const SessionSettings& settings) {
-  return Json{{"pretest_count", settings.pretest_count},
-              {"eval_count", settings.eval_count},
-              {"device", settings.device},
-              {"weak_skills", settings.weak_skills},
-              {"drills_per_weak_skill", settings.drills_per_weak_skill}};
+  Json json{{"pretest_count", settings.pretest_count},
+            {"eval_count", settings.eval_count},
+            {"device", settings.device},
+            {"weak_skills", settings.weak_skills},
+            {"drills_per_weak_skill", settings.drills_per_weak_skill}};
+  if (settings.goal_region) json["goal_region"] = std::string(to_string(*settings.goal_region));
+  return json;
 }
 
 void read_settings_json(const JsonView& view, SessionSettings& settings) {
@@ -32,6 +34,25 @@ void read_settings_json(const JsonView& view, SessionSettings& settings) {
   if (auto v = view.find("device")) settings.device = v->string();
   if (auto v = view.find("weak_skills")) settings.weak_skills = static_cast<int>(v->integer());
   if (auto v = view.find("drills_per_weak_skill")) settings.drills_per_weak_skill = static_cast<int>(v->integer());
+  // Parking sessions recorded before the study corner existed have none: they ran on the whole lot (lot()).
+  settings.goal_region.reset();
+  if (auto v = view.find("goal_region")) settings.goal_region = parse_goal_region(v->string(), v->path());
+}
+
+SessionSettings settings_of_session(const records::SessionRow& row) {
+  const std::string where = "session " + std::to_string(row.id) + " settings";
+  SessionSettings settings;
+  settings.learner = row.learner;
+  settings.condition = parse_condition(row.condition);
+  settings.seed = row.seed;
+  const Json json = parse_json_text(row.settings_json, where);
+  read_settings_json(JsonView(json, where), settings);
+  settings.validate();
+  return settings;
+}
+
+GoalRegion first_session_goal_region(int earlier_parking_sessions) {
+  return earlier_parking_sessions == 0 ? GoalRegion::StudyCorner : GoalRegion::WholeLot;
 }
 
 }  // namespace sc

@@ -36,7 +36,7 @@ RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewar
     change.seen = occurs(before) || occurs(after);
     const auto practised = trials_per_skill.find(m);
     change.practice_trials = practised == trials_per_skill.end() ? 0 : practised->second;
-    change.targeted = change.practice_trials > 0;
+    change.drilled = change.practice_trials > 0;
     summary.skills.push_back(change);
   }
   return summary;

@@ -14,7 +14,7 @@ struct SkillChange {
   int skill = 0;
   double before = 0.0;    // E_m on the pre-test (<= 0, 0 = no mistakes seen)
   double after = 0.0;     // E_m on this round's evaluation
-  bool targeted = false;  // practised in this round: a target of a drill or a skill item that was played
+  bool drilled = false;   // practised in this round: a target of a drill or a skill item that was played
   int practice_trials = 0;  // how many practice trials of this round targeted it (extra attempts included)
   bool seen = false;      // the expert used it in the pre-test or evaluation scenarios
 };

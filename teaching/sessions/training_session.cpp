@@ -339,15 +339,10 @@ RoundSummary TrainingSession::summary() const {
 }
 
 std::map<int, int> TrainingSession::practice_per_skill() const {
-  // Whole trajectories and time slices practise no skill on their own, so they mark none as drilled.
   const RoundState& st = state(round());
-  std::map<int, int> out;
-  for (const auto& [item, trial] : st.practice) {
-    const PracticeItem& practised = st.curriculum.items.at(static_cast<std::size_t>(item));
-    if (practised.kind != PracticeKind::Drill && practised.kind != PracticeKind::Skill) continue;
-    for (int m : practised.target_skills) ++out[m];
-  }
-  return out;
+  std::vector<int> played;
+  for (const auto& [item, trial] : st.practice) played.push_back(item);
+  return practice_trials_per_skill(st.curriculum, played);
 }
 
 void TrainingSession::start_next_round() {

@@ -14,12 +14,7 @@ std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, rec
     throw InputError(where, "is a " + row.task + " session, not " + kit.task());
   std::unique_ptr<TrainingSession> s(new TrainingSession(kit, store, std::move(now)));
   s->session_id_ = row.id;
-  s->settings_.learner = row.learner;
-  s->settings_.condition = parse_condition(row.condition);
-  s->settings_.seed = row.seed;
-  const Json settings = parse_json_text(row.settings_json, where + " settings");
-  read_settings_json(JsonView(settings, where + " settings"), s->settings_);
-  s->settings_.validate();
+  s->settings_ = settings_of_session(row);
   s->select_pretest();
   s->rounds_.resize(1);
 

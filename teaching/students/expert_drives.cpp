@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "engine/core/rng.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "teaching/students/bc_datasets.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -28,18 +28,13 @@ BcDataset pairs_by_sign(const BcDataset& data, bool reverse) {
 
 }  // namespace
 
-ParkingScenario expert_drive_scenario(std::uint64_t seed, int index, GoalRegion region) {
-  Rng rng = Rng(seed).fork(static_cast<std::uint64_t>(index));
-  return sample_parking_scenario(rng, LotVariant::Classic, 0.0, region);
-}
-
 std::vector<ParkingTrial> plan_expert_drives(int count, std::uint64_t seed, GoalRegion region,
                                              const std::function<void(int)>& progress) {
   const ParkingExpert expert;
   std::vector<ParkingTrial> trials;
   trials.reserve(static_cast<std::size_t>(std::max(count, 0)));
   for (int i = 0; i < count; ++i) {
-    const ParkingScenario scenario = expert_drive_scenario(seed, i, region);
+    const ParkingScenario scenario = parking_pool_scenario(seed, i, region);
     trials.push_back(expert.plan(scenario).to_trial(scenario));
     if (progress) progress(i + 1);
   }

@@ -15,10 +15,7 @@
 
 namespace sc {
 
-// Scenario i of a drive set: sample_parking_scenario(Rng(seed).fork(i), Classic, 0, region).
-ParkingScenario expert_drive_scenario(std::uint64_t seed, int index, GoalRegion region);
-
-// ParkingExpert plans of scenarios 0..count-1 (count x ~30 ms). progress(done) after each plan, if set.
+// ParkingExpert plans of scenarios parking_pool_scenario(seed, 0..count-1, region) (count x ~30 ms). progress(done) after each plan, if set.
 std::vector<ParkingTrial> plan_expert_drives(int count, std::uint64_t seed, GoalRegion region,
                                              const std::function<void(int)>& progress = {});
 

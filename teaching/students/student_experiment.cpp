@@ -12,6 +12,7 @@
 #include "teaching/students/bc_datasets.hpp"
 #include "teaching/students/finetune_data.hpp"
 #include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -35,7 +36,7 @@ std::vector<ParkingScenario> evaluation_set(std::vector<ParkingScenario> taken, 
   std::vector<ParkingScenario> out;
   const std::uint64_t seed = derived_seed(config.seed, kEvaluationSet, static_cast<std::uint64_t>(set));
   for (int i = 0; static_cast<int>(out.size()) < config.scenarios_per_set; ++i) {
-    const ParkingScenario s = expert_drive_scenario(seed, i, config.region);
+    const ParkingScenario s = parking_pool_scenario(seed, i, config.region);
     if (std::find(taken.begin(), taken.end(), s) != taken.end()) continue;
     taken.push_back(s);
     out.push_back(s);
@@ -148,7 +149,7 @@ LearningCurve learning_curve(const SyntheticStudent& student, const FinetuneMate
   curve.rehearsal = config.finetune_rehearsal;
   curve.seed = derived_seed(config.seed, kCurve);
   std::vector<ParkingScenario> scenarios;
-  for (int i = 0; i < curve.rollouts; ++i) scenarios.push_back(expert_drive_scenario(derived_seed(curve.seed, kEvaluationSet), i, config.region));
+  for (int i = 0; i < curve.rollouts; ++i) scenarios.push_back(parking_pool_scenario(derived_seed(curve.seed, kEvaluationSet), i, config.region));
   LearningCurve out = fixed_drill_learning_curve(student.policy, student.training_data, material, scenarios, curve);
   report(progress, "learning curve", 1, 1);
   return out;

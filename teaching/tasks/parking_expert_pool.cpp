@@ -10,10 +10,10 @@ constexpr const char* kFormat = "skillcoach-parking-expert-pool";
 constexpr int kVersion = 1;
 }  // namespace
 
-ParkingScenario parking_pool_scenario(std::uint64_t seed, int index) {
+ParkingScenario parking_pool_scenario(std::uint64_t seed, int index, GoalRegion region) {
   // One forked stream per index: scenario i does not depend on how many scenarios are drawn.
   Rng rng = Rng(seed).fork(static_cast<std::uint64_t>(index));
-  return sample_parking_scenario(rng, LotVariant::Classic);
+  return sample_parking_scenario(rng, LotVariant::Classic, 0.0, region);
 }
 
 std::vector<ParkingTrial> generate_parking_pool(const ParkingPoolOptions& options) {
@@ -22,14 +22,15 @@ std::vector<ParkingTrial> generate_parking_pool(const ParkingPoolOptions& option
   std::vector<ParkingTrial> trials;
   trials.reserve(static_cast<std::size_t>(options.count));
   for (int i = 0; i < options.count; ++i) {
-    const ParkingScenario scenario = parking_pool_scenario(options.seed, i);
+    const ParkingScenario scenario = parking_pool_scenario(options.seed, i, options.region);
     trials.push_back(expert.plan(scenario).to_trial(scenario));
   }
   return trials;
 }
 
 Json parking_pool_json(const ParkingPoolOptions& options, const std::vector<ParkingTrial>& trials) {
-  Json doc = {{"format", kFormat}, {"version", kVersion}, {"seed", options.seed}, {"count", trials.size()}};
+  Json doc = {{"format", kFormat}, {"version", kVersion}, {"seed", options.seed}, {"count", trials.size()},
+              {"region", std::string(to_string(options.region))}};
   Json list = Json::array();
   for (const auto& t : trials) list.push_back(parking_trial_to_json(t));
   doc["trials"] = std::move(list);
@@ -43,6 +44,11 @@ std::vector<ParkingTrial> parse_parking_pool(const Json& doc, const std::string&
   if (root.at("version").integer() != kVersion) root.at("version").fail("unsupported version");
   if (static_cast<std::uint64_t>(root.at("seed").integer()) != expected.seed)
     root.at("seed").fail("pool was generated with another seed (" + std::to_string(expected.seed) + " expected)");
+  GoalRegion region = GoalRegion::WholeLot;
+  if (const auto v = root.find("region")) region = parse_goal_region(v->string(), source + ": " + v->path());
+  if (region != expected.region)
+    root.fail("pool of the " + std::string(to_string(region)) + ", " + std::string(to_string(expected.region)) +
+              " expected");
   const JsonView list = root.at("trials");
   if (static_cast<long long>(list.size()) != expected.count)
     list.fail("expected " + std::to_string(expected.count) + " trials, got " + std::to_string(list.size()));
@@ -52,7 +58,7 @@ std::vector<ParkingTrial> parse_parking_pool(const Json& doc, const std::string&
     ParkingTrial t = parse_parking_trial(item.raw(), source + ": " + item.path());
     if (t.states.size() != t.actions.size() + 1 || t.rewards.size() != t.actions.size())
       item.fail("expert trials need T+1 states and T rewards");
-    if (!(t.scenario == parking_pool_scenario(expected.seed, static_cast<int>(i))))
+    if (!(t.scenario == parking_pool_scenario(expected.seed, static_cast<int>(i), expected.region)))
       item.at("scenario").fail("not the scenario the seed gives for this index");
     trials.push_back(std::move(t));
   }

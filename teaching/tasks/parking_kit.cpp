@@ -21,11 +21,14 @@ ParkingScenario scenario_of(const Json& scenario, const std::string& where) {
 
 }  // namespace
 
-std::filesystem::path default_parking_pool_file() { return asset_dir() / "experts" / "parking_pool.json"; }
+std::filesystem::path default_parking_pool_file(GoalRegion region) {
+  return asset_dir() / "experts" /
+         (region == GoalRegion::StudyCorner ? "parking_pool_study_corner.json" : "parking_pool.json");
+}
 
 ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
                        const ParkingKitOptions& options)
-    : extractor_(std::move(extractor)), extractor_notice_(std::move(extractor_notice)) {
+    : extractor_(std::move(extractor)), extractor_notice_(std::move(extractor_notice)), region_(options.pool.region) {
   if (options.pool_file.empty()) {
     build(generate_parking_pool(options.pool));
     return;
@@ -36,8 +39,8 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
 }
 
 ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
-                       std::vector<ParkingTrial> pool)
-    : extractor_(std::move(extractor)), extractor_notice_(std::move(extractor_notice)) {
+                       std::vector<ParkingTrial> pool, GoalRegion region)
+    : extractor_(std::move(extractor)), extractor_notice_(std::move(extractor_notice)), region_(region) {
   build(std::move(pool));
 }
 
@@ -90,9 +93,9 @@ std::vector<Json> ParkingKit::fresh_scenarios(int count, std::uint64_t seed, con
   for (std::size_t i = 0; i < exclude.size(); ++i)
     taken.push_back(scenario_of(exclude[i], "excluded scenario " + std::to_string(i)));
   std::vector<Json> out;
-  // 30 spots x continuous headings: collisions with the excluded list are rare, so this ends quickly.
+  // 3 or 30 spots x continuous headings: collisions with the excluded list are rare, so this ends quickly.
   for (int i = 0; static_cast<int>(out.size()) < count; ++i) {
-    const ParkingScenario s = parking_pool_scenario(seed, i);
+    const ParkingScenario s = parking_pool_scenario(seed, i, region_);
     if (std::find(taken.begin(), taken.end(), s) != taken.end()) continue;
     taken.push_back(s);
     out.push_back(parking_scenario_to_json(s));

@@ -22,8 +22,8 @@ struct ParkingKitOptions {
   ParkingPoolOptions pool;
 };
 
-// asset_dir()/experts/parking_pool.json
-std::filesystem::path default_parking_pool_file();
+// asset_dir()/experts/parking_pool.json, or parking_pool_study_corner.json for the study corner.
+std::filesystem::path default_parking_pool_file(GoalRegion region = GoalRegion::WholeLot);
 
 class ParkingKit final : public TaskKit {
  public:
@@ -32,9 +32,10 @@ class ParkingKit final : public TaskKit {
   // through to extractor_notice().
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
              const ParkingKitOptions& options);
-  // With a ready pool (tests, tools): every trial needs control-rate actions and T+1 states.
+  // With a ready pool (tests, tools): every trial needs control-rate actions and T+1 states; `region` says
+  // where its goals lie (fresh scenarios are drawn there too).
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
-             std::vector<ParkingTrial> pool);
+             std::vector<ParkingTrial> pool, GoalRegion region = GoalRegion::WholeLot);
 
   std::string task() const override { return "parking"; }
   const SkillExtractor& extractor() const override { return *extractor_; }
@@ -49,7 +50,7 @@ class ParkingKit final : public TaskKit {
   double reward_of(const Json& trial) const override;
   // The pool's expert trial when the scenario is in the pool, else a fresh ParkingExpert plan.
   Json expert_trial(const Json& scenario) const override;
-  // Classic scenarios drawn like the pool's (parking_pool_scenario(seed, i), i = 0, 1, ...), skipping
+  // Classic scenarios drawn like the pool's (parking_pool_scenario(seed, i, region), i = 0, 1, ...), skipping
   // any equal to one in `exclude` and duplicates. InputError for a malformed exclude entry.
   std::vector<Json> fresh_scenarios(int count, std::uint64_t seed, const std::vector<Json>& exclude) const override;
   std::string describe_skill(int skill) const override;
@@ -62,6 +63,8 @@ class ParkingKit final : public TaskKit {
 
   // What each skill does on the expert pool (describe_skill's source; tests find reversing skills here).
   const std::vector<ParkingSkillMotion>& skill_motions() const { return motions_; }
+  // Where the pool's and the fresh scenarios' goals lie.
+  GoalRegion goal_region() const { return region_; }
   // Why the pool was regenerated ("" when it was read from the file or given).
   const std::string& pool_notice() const { return pool_notice_; }
   const ParkingDrillProjector& parking_projector() const { return *projector_; }
@@ -72,6 +75,7 @@ class ParkingKit final : public TaskKit {
   std::shared_ptr<const SkillExtractor> extractor_;
   std::string extractor_notice_;
   std::string pool_notice_;
+  GoalRegion region_ = GoalRegion::WholeLot;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

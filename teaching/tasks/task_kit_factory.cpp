@@ -8,6 +8,13 @@
 #include "teaching/tasks/writing_kit.hpp"
 
 namespace sc {
+namespace {
+
+struct ChosenExtractor {
+  std::shared_ptr<const SkillExtractor> extractor;
+  std::string notice;  // why the time heuristic is used; empty for the trained model
+};
+
 ChosenExtractor choose_skill_extractor(const std::string& task, const std::filesystem::path& model) {
   if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), ""};
   const int slices = task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
@@ -24,12 +31,15 @@ ChosenExtractor choose_skill_extractor(const std::string& task, const std::files
   }
 }
 
-std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model) {
+}  // namespace
+
+std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model,
+                                       GoalRegion region) {
   if (task != "parking" && task != "writing") throw InputError("task", "'" + task + "' is not parking or writing");
   ChosenExtractor chosen = choose_skill_extractor(task, model);
   if (task == "parking")
     return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice,
-                                        ParkingKitOptions{default_parking_pool_file(), {}});
+                                        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}});
   return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
 }
 

@@ -108,6 +108,27 @@ TEST(DrillBuilder, IndividualizedTargetsTheWeakestSkillsAndKeepsNgramsDistinct) 
   EXPECT_EQ(fallback[1].ngram, (std::vector<int>{0, 1, 2}));  // 2 has no other n-gram
 }
 
+TEST(DrillBuilder, ATargetWithFewerUnusedNgramsThanDrillsStillGetsItsDrills) {
+  DrillConfig config = DrillConfig::parking();
+  config.drills_per_target = 2;
+  Rng rng(5);
+  // Skill 6 occurs in one n-gram only, (5,6): both of its drills use it, cut from fresh segments.
+  const auto drills = DrillBuilder(pool(), config).for_targets({6}, rng);
+  ASSERT_EQ(drills.size(), 2u);
+  EXPECT_EQ(drills[0].ngram, (std::vector<int>{5, 6}));
+  EXPECT_EQ(drills[1].ngram, (std::vector<int>{5, 6}));
+  // Skill 0 occurs in (0,1,2) only: both its drills; skill 1 then takes its two n-grams still unused.
+  Rng rng2(5);
+  const auto shared = DrillBuilder(pool(), config).for_targets({0, 1}, rng2);
+  ASSERT_EQ(shared.size(), 4u);
+  EXPECT_EQ(shared[1].ngram, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(shared[2].ngram, (std::vector<int>{3, 1, 4}));
+  EXPECT_EQ(shared[3].ngram, (std::vector<int>{1, 4, 5}));
+  config.distinct_ngrams = false;  // literal: only the n-grams there are
+  Rng rng3(5);
+  EXPECT_EQ(DrillBuilder(pool(), config).for_targets({6}, rng3).size(), 1u);
+}
+
 TEST(DrillBuilder, TargetsAbsentFromThePoolGetNoDrill) {
   Rng rng(0);
   const auto drills = DrillBuilder(pool(), DrillConfig::parking()).for_targets({42, 6}, rng);

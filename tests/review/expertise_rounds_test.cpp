@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
 
 #include "teaching/expertise/expertise_json.hpp"
 #include "tests/review/review_fixture.hpp"
@@ -22,7 +23,7 @@ TEST(ExpertiseRounds, EchoesTheStoredDiagnosisOfEveryRound) {
     const Json doc = Json::parse(record.diagnoses[r].expertise_json);
     const ExpertiseEstimate stored = expertise_from_json(JsonView(doc, "diagnosis"));
     const Json targets = Json::parse(record.diagnoses[r].targets_json);
-    int targeted = 0;
+    std::set<int> drilled;
     for (const auto& s : rounds.skills) {
       ASSERT_EQ(s.expertise.size(), 2u);
       const bool evidence = stored.occurrences[static_cast<std::size_t>(s.skill)] > 0;
@@ -31,10 +32,19 @@ TEST(ExpertiseRounds, EchoesTheStoredDiagnosisOfEveryRound) {
         EXPECT_DOUBLE_EQ(*s.expertise[r], stored.expertise[static_cast<std::size_t>(s.skill)]);
         EXPECT_GE(*s.expertise[r], rounds.lowest);
       }
-      targeted += s.targeted[r];
+      if (s.drilled[r]) drilled.insert(s.skill);
       EXPECT_FALSE(s.description.empty());
     }
-    EXPECT_EQ(targeted, static_cast<int>(targets.size()));
+    // Outlined: the skills of the drills the learner played that round (the diagnosis may target more).
+    const int round = record.diagnoses[r].round;
+    const Json items = Json::parse(record.curricula.at(r).items_json).at("items");
+    std::set<int> played;
+    for (const auto* t : record.trials_of(records::TrialKind::Practice, round))
+      for (const auto& m : items.at(static_cast<std::size_t>(*t->record.drill_index)).at("target_skills"))
+        played.insert(m.get<int>());
+    EXPECT_EQ(drilled, played) << "round " << round;
+    EXPECT_FALSE(drilled.empty());
+    for (int m : drilled) EXPECT_NE(std::find(targets.begin(), targets.end(), m), targets.end()) << m;
     for (int m = 0; m < stored.num_skills(); ++m) seen[static_cast<std::size_t>(m)] += stored.occurrences[static_cast<std::size_t>(m)] > 0;
   }
   // A skill is listed when some round has evidence for it, and only then.

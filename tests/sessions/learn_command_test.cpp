@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/json_file.hpp"
 #include "teaching/records/learner_store.hpp"
 #include "tests/support/run_skillcoach.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -63,12 +64,38 @@ void expect_complete_session(const fs::path& dir, const std::string& learner, co
   EXPECT_TRUE(summary.eval_mean.has_value());
 }
 
-TEST(LearnCommand, ParkingSessionEndToEnd) {
+// The goal spots of a session's pre-test and evaluation trials.
+std::set<int> test_goal_spots(const fs::path& dir, int session_index) {
+  records::LearnerStore store(dir);
+  const auto id = store.list_learners().at(0).sessions.at(static_cast<std::size_t>(session_index)).session.id;
+  std::set<int> spots;
+  for (const auto& t : store.trials_of_session(id)) {
+    if (t.record.kind != TrialKind::Pretest && t.record.kind != TrialKind::Eval) continue;
+    spots.insert(Json::parse(t.record.trajectory_json).at("scenario").at("goal").at("spot").get<int>());
+  }
+  return spots;
+}
+
+TEST(LearnCommand, ParkingSessionEndToEndOnTheStudyCornerFirstThenTheWholeLot) {
   const fs::path dir = fresh_dir("parking");
-  const test::CommandResult r = test::run_skillcoach("learn --task parking --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  const std::string args = "learn --task parking --pretest 3 --eval 2 --data-dir " + dir.string();
+  const test::CommandResult r = test::run_skillcoach(args + " --learner e2e");
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("started session 1 on the study corner"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "parking");
+  for (int spot : test_goal_spots(dir, 0)) EXPECT_TRUE(spot >= 12 && spot <= 14) << spot;
+  // The learner's second parking session, and any chosen with --lot, use the whole lot.
+  const test::CommandResult second = test::run_skillcoach(args + " --learner e2e");
+  ASSERT_EQ(second.exit_code, 0) << second.output;
+  EXPECT_NE(second.output.find("started session 2 on the whole lot"), std::string::npos) << second.output;
+  const std::set<int> spots = test_goal_spots(dir, 1);
+  EXPECT_TRUE(std::any_of(spots.begin(), spots.end(), [](int s) { return s < 12 || s > 14; }));
+  const test::CommandResult chosen = test::run_skillcoach(args + " --learner other --lot whole-lot");
+  EXPECT_NE(chosen.output.find("started session 3 on the whole lot"), std::string::npos) << chosen.output;
+  const test::CommandResult bad = test::run_skillcoach(args + " --learner other --lot corner");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("unknown goal region"), std::string::npos) << bad.output;
 }
 
 TEST(LearnCommand, WritingSessionEndToEnd) {
@@ -226,7 +253,10 @@ TEST(LearnCommand, SigkillMidSessionKeepsEveryFinishedTrialAndResumesWhereItStop
   }
   const test::CommandResult resumed = test::run_skillcoach(args);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
-  EXPECT_NE(resumed.output.find("resumed session 1 at round 1, drills"), std::string::npos) << resumed.output;
+  // The resumed session keeps the lot it was started on (the learner's first: the study corner).
+  EXPECT_NE(resumed.output.find("resumed session 1 on the study corner (goals in spots 12-14) at round 1, drills"),
+            std::string::npos)
+      << resumed.output;
   expect_complete_session(dir, "crash", "parking", "skills");
   records::LearnerStore store(dir);
   const auto trials = store.trials_of_session(store.list_learners()[0].sessions[0].session.id);

@@ -163,7 +163,7 @@ TEST(TrainingSession, SummaryShowsTheImprovementAndPerSkillChanges) {
   ASSERT_EQ(summary.skills.size(), static_cast<std::size_t>(test::kToySkills));
   EXPECT_LT(summary.skills[kForget].before, 0.0);
   EXPECT_DOUBLE_EQ(summary.skills[kForget].after, 0.0);
-  EXPECT_TRUE(summary.skills[kForget].targeted);
+  EXPECT_TRUE(summary.skills[kForget].drilled);
   s.finish();
   EXPECT_FALSE(store.find_unfinished_session("ada", "toy"));
 }
@@ -182,8 +182,8 @@ TEST(TrainingSession, SummaryMarksDrilledOnlyTheSkillsPractisedThisRoundWithThei
   const RoundSummary summary = s.summary();
   int drilled = 0;
   for (const SkillChange& c : summary.skills) {
-    drilled += c.targeted ? 1 : 0;
-    EXPECT_EQ(c.targeted, c.practice_trials > 0);
+    drilled += c.drilled ? 1 : 0;
+    EXPECT_EQ(c.drilled, c.practice_trials > 0);
   }
   EXPECT_EQ(drilled, 1);  // the diagnosis targeted more, but only one skill was practised
   EXPECT_EQ(summary.skills.at(static_cast<std::size_t>(first_target)).practice_trials, 2);
@@ -193,7 +193,7 @@ TEST(TrainingSession, SummaryMarksDrilledOnlyTheSkillsPractisedThisRoundWithThei
   records::LearnerStore other(fresh_dir("drilled_full"));
   TrainingSession full(kit, other, toy_settings(StudyCondition::FullTrajectory), fixed_clock());
   play_until(full, SessionPhase::Summary);
-  for (const SkillChange& c : full.summary().skills) EXPECT_FALSE(c.targeted) << c.skill;
+  for (const SkillChange& c : full.summary().skills) EXPECT_FALSE(c.drilled) << c.skill;
 }
 
 TEST(TrainingSession, RoundSizeComesFromTheSettingsIsRecordedAndTold) {

@@ -9,6 +9,7 @@
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/students/bc_datasets.hpp"
 #include "teaching/students/expert_drives.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 
@@ -31,7 +32,7 @@ const Fixture& fixture() {
     rank_expertise(diagnosis, 3);
     FinetuneMaterial material{demo_steps(kit.expert_pool()), demo_skills(kit.expert_pool()), diagnosis, 3};
     std::vector<ParkingScenario> scenarios;
-    for (int i = 0; i < 4; ++i) scenarios.push_back(expert_drive_scenario(2, i, GoalRegion::WholeLot));
+    for (int i = 0; i < 4; ++i) scenarios.push_back(parking_pool_scenario(2, i, GoalRegion::WholeLot));
     return Fixture{std::move(kit), std::move(material), std::move(scenarios)};
   }();
   return f;

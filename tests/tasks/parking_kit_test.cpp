@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -67,6 +68,45 @@ TEST(ParkingKit, PoolFileIsWrittenThenReadBackAndRegeneratedWhenCorrupt) {
   const LoadedParkingPool third = load_or_generate_parking_pool(file, options);
   EXPECT_NE(third.notice.find("regenerated"), std::string::npos);
   EXPECT_EQ(parking_trial_to_json(third.trials[2]), parking_trial_to_json(first.trials[2]));
+}
+
+TEST(ParkingPool, ScenariosAreSeededAndStayInTheirRegion) {
+  for (int i = 0; i < 20; ++i) {
+    EXPECT_EQ(parking_pool_scenario(3, i, GoalRegion::WholeLot), parking_pool_scenario(3, i));
+    const ParkingScenario corner = parking_pool_scenario(3, i, GoalRegion::StudyCorner);
+    EXPECT_GE(corner.goal_spot, 12);
+    EXPECT_LE(corner.goal_spot, 14);
+    EXPECT_EQ(corner.heading0, parking_pool_scenario(3, i).heading0);  // only the goal's draw differs
+  }
+  EXPECT_NE(parking_pool_scenario(3, 0), parking_pool_scenario(4, 0));
+}
+
+TEST(ParkingPool, AFileOfTheOtherRegionIsNotUsed) {
+  const auto file = scratch("corner_pool.json");
+  const ParkingPoolOptions corner{2, 5, GoalRegion::StudyCorner};
+  const LoadedParkingPool first = load_or_generate_parking_pool(file, corner);
+  for (const ParkingTrial& t : first.trials) EXPECT_GE(t.scenario.goal_spot, 12);
+  EXPECT_EQ(load_or_generate_parking_pool(file, corner).notice, "");
+  try {
+    parse_parking_pool(read_json_file(file), "corner_pool.json", ParkingPoolOptions{2, 5});
+    FAIL() << "a study-corner pool was accepted as the whole lot's";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pool of the study-corner, whole-lot expected"), std::string::npos) << e.what();
+  }
+  // Files written before regions existed hold whole-lot pools.
+  Json old = parking_pool_json(ParkingPoolOptions{1, 5}, generate_parking_pool(ParkingPoolOptions{1, 5}));
+  old.erase("region");
+  EXPECT_EQ(parse_parking_pool(old, "old.json", ParkingPoolOptions{1, 5}).size(), 1u);
+  EXPECT_THROW(parse_parking_pool(old, "old.json", ParkingPoolOptions{1, 5, GoalRegion::StudyCorner}), InputError);
+}
+
+TEST(ParkingKit, AStudyCornerKitDrawsFreshScenariosInTheCorner) {
+  const ParkingKit corner(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{2, 3, GoalRegion::StudyCorner}});
+  EXPECT_EQ(corner.goal_region(), GoalRegion::StudyCorner);
+  EXPECT_EQ(kit().goal_region(), GoalRegion::WholeLot);
+  std::set<int> spots;
+  for (const Json& s : corner.fresh_scenarios(12, 7, {})) spots.insert(s.at("goal").at("spot").get<int>());
+  EXPECT_EQ(spots, (std::set<int>{12, 13, 14}));
 }
 
 TEST(ParkingKit, RewardIsTheLastStepRewardAndReSimulatedWhenAbsent) {

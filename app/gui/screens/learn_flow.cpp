@@ -5,7 +5,6 @@
 #include <filesystem>
 
 #include "app/gui/screens/learn_scripted_learner.hpp"
-#include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 
@@ -18,15 +17,6 @@ TimestampSource clock_of(const LearnFlow& flow) {
 }
 
 }  // namespace
-
-TaskKit& LearnFlow::kit(const AppServices& services) {
-  const std::string task(to_string(services.task));
-  if (!kit_ || kit_task_ != task) {
-    kit_ = make_task_kit(task);
-    kit_task_ = task;
-  }
-  return *kit_;
-}
 
 records::LearnerStore& LearnFlow::store(const AppServices& services) {
   if (!store_) {
@@ -43,11 +33,10 @@ std::optional<records::ResumePoint> LearnFlow::unfinished(const AppServices& ser
 }
 
 void LearnFlow::start(const AppServices& services, bool resume) {
-  TaskKit& task_kit = kit(services);
   records::LearnerStore& db = store(services);
   if (resume) {
     if (const auto point = unfinished(services)) {
-      session_ = TrainingSession::resume(task_kit, db, *point, clock_of(*this));
+      session_ = TrainingSession::resume(kits_.kit_of(point->session), db, *point, clock_of(*this));
       return;
     }
   }
@@ -56,7 +45,12 @@ void LearnFlow::start(const AppServices& services, bool resume) {
   settings.device = device_key(services.device);
   settings.condition = research ? condition : StudyCondition::Adaptive;
   settings.seed = services.seed;
-  session_ = std::make_unique<TrainingSession>(task_kit, db, settings, clock_of(*this));
+  settings.weak_skills = weak_skills;
+  settings.drills_per_weak_skill = drills_per_weak_skill;
+  if (services.task == TaskKind::parking)
+    settings.goal_region = research ? research_lot : first_session_goal_region(db.session_count(learner, "parking"));
+  const std::string task(to_string(services.task));
+  session_ = std::make_unique<TrainingSession>(kits_.kit(task, settings.lot()), db, settings, clock_of(*this));
 }
 
 LearnFlow::~LearnFlow() {

@@ -14,6 +14,7 @@
 #include "app/gui/app_services.hpp"
 #include "teaching/records/learner_store.hpp"
 #include "teaching/sessions/training_session.hpp"
+#include "teaching/tasks/task_kit_cache.hpp"
 
 namespace sc {
 
@@ -22,10 +23,13 @@ class LearnFlow {
   std::string learner;                                  // typed on the welcome screen
   bool research = false;                                // Ctrl+Shift+R on the welcome screen
   StudyCondition condition = StudyCondition::Adaptive;  // research mode may change it
+  // Parking lot in research mode (recorded with the session); learners get first_session_goal_region.
+  GoalRegion research_lot = GoalRegion::StudyCorner;
+  // Round size (Ind. Drills, Adaptive), recorded with the session: drills for this many weakest skills ...
+  int weak_skills = SessionSettings{}.weak_skills;
+  int drills_per_weak_skill = SessionSettings{}.drills_per_weak_skill;  // ... this many unique drills each
   std::string message;                                  // last problem to show (one line), empty if none
 
-  // The kit of the current task, built on first use (parking plans its pool once, then reads a cache).
-  TaskKit& kit(const AppServices& services);
   records::LearnerStore& store(const AppServices& services);
   TrainingSession* session() { return session_.get(); }
 
@@ -43,8 +47,7 @@ class LearnFlow {
   ~LearnFlow();
 
  private:
-  std::string kit_task_;
-  std::unique_ptr<TaskKit> kit_;
+  TaskKitCache kits_;  // built on first use (parking segments its pool once per lot)
   std::unique_ptr<records::LearnerStore> store_;
   std::unique_ptr<TrainingSession> session_;
 };

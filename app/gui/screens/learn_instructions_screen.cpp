@@ -86,7 +86,9 @@ const char* device_words(DeviceKind kind) {
 
 class LearnInstructionsScreen final : public Screen {
  public:
-  explicit LearnInstructionsScreen(AppServices& services) : services_(services) {}
+  explicit LearnInstructionsScreen(AppServices& services)
+      : services_(services),
+        flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Pretest) : learn_flow(services)) {}
 
   void update(const FrameInput& input, double) override { confirm_ = confirm_ || learn_ui::confirm_pressed(input); }
 
@@ -99,6 +101,7 @@ class LearnInstructionsScreen final : public Screen {
                                        "without touching the walls or the parked cars. Each trial has a time limit."
                                      : "Goal: write the shown Balinese characters over the guide, in the right stroke "
                                        "order and direction. Each trial has a time limit.");
+    draw_lot_note();
     ImGui::Dummy(ImVec2(0, 6 * s));
     const float box_w = 360.0f * s, box_h = 150.0f * s;
     ImDrawList& d = *ImGui::GetWindowDrawList();
@@ -138,7 +141,18 @@ class LearnInstructionsScreen final : public Screen {
   }
 
  private:
+  // Parking: which spots this session's goals use, so a learner is not surprised by the corner-only goals.
+  void draw_lot_note() {
+    const TrainingSession* session = flow_.session();
+    if (!session || !session->settings().goal_region) return;
+    learn_ui::muted_wrapped(*session->settings().goal_region == GoalRegion::StudyCorner
+                                ? "This session's goals are the three spots at the bottom right of the lot, where "
+                                  "fewer manoeuvres are needed. Later sessions use the whole lot."
+                                : "Goals can be any spot of the lot.");
+  }
+
   AppServices& services_;
+  LearnFlow& flow_;
   bool confirm_ = false;
 };
 

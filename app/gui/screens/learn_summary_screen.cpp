@@ -51,7 +51,7 @@ class LearnSummaryScreen final : public Screen {
     // The table scrolls when the window is too short for every row (the parking model has 16 skills), so
     // the two buttons below always show.
     int rows = 0;
-    for (const SkillChange& c : summary_->skills) rows += c.seen || c.targeted ? 1 : 0;
+    for (const SkillChange& c : summary_->skills) rows += c.seen || c.drilled ? 1 : 0;
     const float row = ImGui::GetTextLineHeight() + ImGui::GetStyle().CellPadding.y * 2;  // a table row's pitch
     const float rows_height = rows * row;
     // Whole rows only, so the last visible one is not cut.
@@ -59,10 +59,10 @@ class LearnSummaryScreen final : public Screen {
     const ImGuiTableFlags scroll = rows_height > room ? ImGuiTableFlags_ScrollY : 0;
     if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp | scroll, ImVec2(0, scroll ? room : 0))) {
       for (const SkillChange& c : summary_->skills) {
-        if (!c.seen && !c.targeted) continue;
+        if (!c.seen && !c.drilled) continue;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        if (c.targeted)
+        if (c.drilled)
           ImGui::Text("%s  (drilled, %d trial%s)", s->kit().describe_skill(c.skill).c_str(), c.practice_trials,
                       c.practice_trials == 1 ? "" : "s");
         else

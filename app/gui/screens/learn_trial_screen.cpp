@@ -74,9 +74,13 @@ class LearnTrialScreen final : public Screen {
       return;
     }
     const float s = ui.ui_scale;
-    const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width), static_cast<float>(ui.height) - 56 * s};
+    const GaugeLayout gauges = layout_driving_gauges(
+        {static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 12.0f * s}, s);
+    // The lot between the header and the gauge strip, so the gauges never hide the goal (the study corner's
+    // spots are the bottom-right ones) or a parked car.
+    const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width), std::max(1.0f, gauges.min.y - 8.0f * s - 56 * s)};
     draw_scene(ui, viewport);
-    draw_gauges(ui);
+    draw_gauges(ui, gauges);
     draw_header(ui);
     if (stage_ == Stage::countdown) draw_countdown(ui);
     if (paused()) draw_pause(ui);
@@ -181,10 +185,8 @@ class LearnTrialScreen final : public Screen {
     paint_parking_scene(ui.renderer, view);
   }
 
-  void draw_gauges(UiContext& ui) {
+  void draw_gauges(UiContext& ui, const GaugeLayout& layout) {
     const float s = ui.ui_scale;
-    const GaugeLayout layout = layout_driving_gauges(
-        {static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 16.0f * s}, s);
     input_.set_joystick_base({layout.stick.x, layout.stick.y}, layout.radius * 0.78f);
     DrivingGaugeValues values;
     values.speed = drive_->current().speed;

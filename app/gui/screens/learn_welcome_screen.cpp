@@ -47,6 +47,7 @@ class LearnWelcomeScreen final : public Screen {
     ImGui::Dummy(ImVec2(0, 8 * ui.ui_scale));
     draw_name(ui);
     draw_learners(ui);
+    draw_round_size(ui);
     if (flow_.research) draw_research(ui);
     ImGui::Dummy(ImVec2(0, 8 * ui.ui_scale));
     draw_start(ui);
@@ -94,6 +95,23 @@ class LearnWelcomeScreen final : public Screen {
     (void)ui;
   }
 
+  // Closed by default: the defaults (3 skills x 2 drills, a few minutes) suit a first session.
+  void draw_round_size(UiContext& ui) {
+    ImGui::Dummy(ImVec2(0, 4 * ui.ui_scale));
+    const std::string label = "Practice per round: " + std::to_string(flow_.drills_per_weak_skill) + " drills for each of your " +
+                              std::to_string(flow_.weak_skills) + " weakest skills###round_size";
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    const bool open = ImGui::TreeNode(label.c_str());
+    ImGui::PopStyleColor();
+    if (!open) return;
+    ImGui::SetNextItemWidth(220 * ui.ui_scale);
+    ImGui::SliderInt("weakest skills", &flow_.weak_skills, 1, 5);
+    ImGui::SetNextItemWidth(220 * ui.ui_scale);
+    ImGui::SliderInt("drills per skill", &flow_.drills_per_weak_skill, 1, 5);
+    learn_ui::muted_wrapped("Each drill is a demonstration, then your turn. Saved with the session.");
+    ImGui::TreePop();
+  }
+
   void draw_research(UiContext& ui) {
     ImGui::Separator();
     learn_ui::heading(ui, "Research mode: study condition");
@@ -102,6 +120,12 @@ class LearnWelcomeScreen final : public Screen {
       if (ImGui::RadioButton(label.c_str(), flow_.condition == c)) flow_.condition = c;
       if (c != StudyCondition::Drills && c != StudyCondition::Adaptive) ImGui::SameLine();
     }
+    if (services_.task != TaskKind::parking) return;
+    learn_ui::heading(ui, "Research mode: goal spots");
+    if (ImGui::RadioButton("Study corner (spots 12-14, the paper's study)", flow_.research_lot == GoalRegion::StudyCorner))
+      flow_.research_lot = GoalRegion::StudyCorner;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Whole lot", flow_.research_lot == GoalRegion::WholeLot)) flow_.research_lot = GoalRegion::WholeLot;
   }
 
   void draw_start(UiContext& ui) {

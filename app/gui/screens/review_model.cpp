@@ -4,7 +4,6 @@
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 #include "teaching/review/practice_rounds.hpp"
-#include "teaching/tasks/task_kit_factory.hpp"
 
 namespace sc {
 
@@ -32,12 +31,6 @@ void ReviewModel::reload() {
 
 void ReviewModel::sort(review::SessionColumn column, bool ascending) { review::sort_session_rows(rows_, column, ascending); }
 
-const TaskKit& ReviewModel::kit(const std::string& task) {
-  auto& k = kits_[task];
-  if (!k) k = make_task_kit(task);
-  return *k;
-}
-
 const review::SessionListRow* ReviewModel::session_row() const {
   if (!session_) return nullptr;
   for (const auto& row : rows_)
@@ -49,7 +42,7 @@ void ReviewModel::select_session(std::int64_t id) {
   if (!store_) return;
   try {
     review::SessionRecord record = review::load_session_record(*store_, id);
-    session_ = std::make_unique<review::SessionReview>(kit(record.session.task), std::move(record));
+    session_ = std::make_unique<review::SessionReview>(kits_.kit_of(record.session), std::move(record));
     trial_.reset();
     groups_.reset();
     test_trials_.reset();

@@ -14,6 +14,7 @@
 #include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/review_playback.hpp"
 #include "teaching/review/session_rows.hpp"
+#include "teaching/tasks/task_kit_cache.hpp"
 
 namespace sc {
 
@@ -48,13 +49,12 @@ class ReviewModel {
   const std::vector<std::string>& practice_lines();
 
  private:
-  const TaskKit& kit(const std::string& task);
   const std::vector<review::TrialReview>& test_trials();
 
   AppServices& services_;
   std::unique_ptr<records::LearnerStore> store_;
   std::vector<review::SessionListRow> rows_;
-  std::map<std::string, std::unique_ptr<TaskKit>> kits_;
+  TaskKitCache kits_;
   std::unique_ptr<review::SessionReview> session_;
   std::optional<review::TrialReview> trial_;
   review_view::TrialPicture picture_;

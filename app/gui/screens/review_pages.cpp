@@ -16,7 +16,7 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWi
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 std::string session_label(const review::SessionListRow& row) {
-  return row.learner + " - " + row.task + " - " + row.condition + " - " + review::cell_text(row, review::SessionColumn::Date);
+  return row.learner + " - " + review::cell_text(row, review::SessionColumn::Task) + " - " + row.condition + " - " + review::cell_text(row, review::SessionColumn::Date);
 }
 
 void world_frame(UiContext& ui, float x, float y, float w, float h) {

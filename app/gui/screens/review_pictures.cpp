@@ -76,7 +76,7 @@ review_view::TrialImageText trial_image_text(const std::string& learner, const r
 review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds) {
   review_view::ExpertiseChart chart;
   for (int r : rounds.rounds) chart.rounds.push_back("round " + std::to_string(r));
-  for (const auto& s : rounds.skills) chart.skills.push_back({s.skill, s.description, s.expertise, s.targeted});
+  for (const auto& s : rounds.skills) chart.skills.push_back({s.skill, s.description, s.expertise, s.drilled});
   chart.lowest = rounds.lowest;
   return chart;
 }

@@ -9,7 +9,7 @@
 #include "engine/core/error.hpp"
 #include "engine/render/gl_context.hpp"
 #include "teaching/review/review_report.hpp"
-#include "teaching/tasks/task_kit_factory.hpp"
+#include "teaching/tasks/task_kit_cache.hpp"
 
 namespace sc {
 namespace {
@@ -44,17 +44,13 @@ class ReportWriter {
     return *context_;
   }
 
-  const TaskKit& kit(const std::string& task) {
-    auto& kit = kits_[task];
-    if (!kit) kit = make_task_kit(task);
-    return *kit;
-  }
-
   review::SessionReport session(const records::LearnerStore& store, const review::SessionListRow& row) {
     review::SessionReport report;
     report.row = row;
-    report.extractor_notice = kit(row.task).extractor_notice();
-    const review::SessionReview review(kit(row.task), review::load_session_record(store, row.session_id));
+    review::SessionRecord record = review::load_session_record(store, row.session_id);
+    const TaskKit& kit = kits_.kit_of(record.session);
+    report.extractor_notice = kit.extractor_notice();
+    const review::SessionReview review(kit, std::move(record));
     std::vector<review::TrialReview> trials;
     for (const auto& t : review.record().trials) trials.push_back(review.trial(t.seq));
     const std::string prefix = "session" + std::to_string(row.session_id) + "_";
@@ -90,7 +86,7 @@ class ReportWriter {
   const ReportRequest& request_;
   ReportResult& result_;
   std::unique_ptr<GlContext> context_;
-  std::map<std::string, std::unique_ptr<TaskKit>> kits_;
+  TaskKitCache kits_;
 };
 
 }  // namespace
