@@ -232,6 +232,18 @@ TEST(Curriculum, RandomDrillsAndTimeSlices) {
   }
 }
 
+TEST(Curriculum, PlayedDrillsAndSkillItemsCountForTheirSkillsTimeSlicesForNone) {
+  Curriculum c;
+  c.items.push_back({PracticeKind::Drill, {4}, {}, 1});
+  c.items.push_back({PracticeKind::Skill, {2}, {}, 3});
+  c.items.push_back({PracticeKind::TimeSlice, {1}, {}, 1});
+  c.items.push_back({PracticeKind::FullTrajectory, {2, 4}, {}, 1});
+  // Item 0 played twice (one more on that skill), item 1 once, the slice and the trajectory once each.
+  EXPECT_EQ(practice_trials_per_skill(c, {0, 0, 1, 2, 3}), (std::map<int, int>{{2, 1}, {4, 2}}));
+  EXPECT_TRUE(practice_trials_per_skill(c, {}).empty());
+  EXPECT_THROW(practice_trials_per_skill(c, {4}), InputError);
+}
+
 TEST(Curriculum, TimeHeuristicPractisesThreeDifferentIntervalsDrawnPerLearner) {
   Pool pool = make_pool();
   for (std::size_t e = 0; e < pool.skills.size(); ++e) {  // K = 8 equal slices, as for writing

@@ -44,6 +44,21 @@ TEST(SessionRows, OneRowPerSessionWithTheLearnersName) {
   EXPECT_FALSE(r[1].improvement.has_value());
 }
 
+TEST(SessionRows, AParkingSessionShowsItsLot) {
+  records::LearnerOverview ada{1, "Ada", "2024-05-01T09:00:00.000Z", {}};
+  const char* settings[] = {R"({"goal_region":"study-corner"})", "{}", R"({"goal_region":"corner"})", "{}"};
+  for (int i = 0; i < 4; ++i) {
+    ada.sessions.push_back(summary(i + 1, i == 3 ? "writing" : "parking", "2024-05-01T10:00:00.000Z", -1.0, -0.5));
+    ada.sessions.back().session.learner = "Ada";
+    ada.sessions.back().session.settings_json = settings[i];
+  }
+  const auto r = session_rows({ada});
+  EXPECT_EQ(cell_text(r[0], SessionColumn::Task), "parking, study corner");
+  EXPECT_EQ(cell_text(r[1], SessionColumn::Task), "parking, whole lot");  // recorded before lots existed
+  EXPECT_EQ(cell_text(r[2], SessionColumn::Task), "parking, settings unreadable");
+  EXPECT_EQ(cell_text(r[3], SessionColumn::Task), "writing");
+}
+
 TEST(SessionRows, SortsByEveryColumnBothWays) {
   auto r = rows();
   sort_session_rows(r, SessionColumn::Date, true);

@@ -203,6 +203,7 @@ TEST(TrainingSession, RoundSizeComesFromTheSettingsIsRecordedAndTold) {
   SessionSettings settings = toy_settings(StudyCondition::IndDrills);
   settings.weak_skills = 1;
   settings.drills_per_weak_skill = 1;
+  settings.goal_region = GoalRegion::StudyCorner;
   TrainingSession s(kit, store, settings, fixed_clock());
   play_until(s, SessionPhase::Drills);
   EXPECT_EQ(s.curriculum().trials(), 1);
@@ -215,6 +216,8 @@ TEST(TrainingSession, RoundSizeComesFromTheSettingsIsRecordedAndTold) {
   const auto resumed = TrainingSession::resume(kit, store, *point, fixed_clock());
   EXPECT_EQ(resumed->settings().weak_skills, 1);
   EXPECT_EQ(resumed->settings().drills_per_weak_skill, 1);
+  EXPECT_EQ(resumed->settings().goal_region, GoalRegion::StudyCorner);
+  EXPECT_EQ(settings_of_session(point->session).lot(), GoalRegion::StudyCorner);
   EXPECT_EQ(resumed->curriculum().items, s.curriculum().items);
   settings.drills_per_weak_skill = 0;
   EXPECT_THROW(TrainingSession(kit, store, settings, fixed_clock()), InputError);
