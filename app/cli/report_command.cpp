@@ -38,7 +38,8 @@ CommandRunner setup(CLI::App& sub) {
     const ReportResult result = write_learner_report(request);
     std::printf("report of %s: %d session(s), %d trials, %zu files in %s\n", options->learner.c_str(), result.sessions,
                 result.trials, result.files.size(), options->out.c_str());
-    return 0;
+    for (const std::string& problem : result.problems) std::fprintf(stderr, "skillcoach: error: %s\n", problem.c_str());
+    return result.problems.empty() ? 0 : 2;
   };
 }
 

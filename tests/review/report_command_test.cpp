@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/render/rgba_image.hpp"
+#include "teaching/records/sqlite_handle.hpp"
 #include "teaching/review/before_after.hpp"
 #include "tests/review/review_fixture.hpp"
 #include "tests/support/run_skillcoach.hpp"
@@ -135,6 +136,33 @@ TEST_F(ReportCommand, UnknownLearnerOrSessionIsOneLineAndExitCode2) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.output, "skillcoach: error: " + db + ": learner 'Ada' has no session 99\n");
   EXPECT_FALSE(fs::exists(out));  // nothing is written for a request that cannot be met
+}
+
+// One damaged stored trial: the rest of the report is written, the bad row named on one line, exit 2.
+TEST_F(ReportCommand, ADamagedTrialIsNamedAndTheRestReported) {
+  const fs::path dir = test::scratch_path("review", "report_damaged_row");
+  fs::remove_all(dir);
+  fs::create_directories(dir / "data");
+  for (const char* name : {"skillcoach.db", "skillcoach.db-wal"})
+    if (fs::exists(fixture.data_dir / name)) fs::copy_file(fixture.data_dir / name, dir / "data" / name);
+  {
+    records::SqliteDb raw(dir / "data" / "skillcoach.db", records::SqliteDb::Mode::ReadWriteCreate);
+    raw.exec("UPDATE trials SET trajectory = json_remove(trajectory, '$.scenario') WHERE seq = 2");
+  }
+  const test::CommandResult run =
+      test::run_skillcoach("report --data-dir " + quoted(dir / "data") + " --learner Ada --out " + quoted(dir / "out"));
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  const std::string named = "skillcoach: error: " + (dir / "data" / "skillcoach.db").string() + ": session " +
+                            std::to_string(fixture.session_id) + ", trial 2 left out: ";
+  EXPECT_NE(run.output.find(named), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("scenario"), std::string::npos) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "report.html"));
+  const std::string prefix = "session" + std::to_string(fixture.session_id) + "_";
+  EXPECT_TRUE(fs::exists(dir / "out" / (prefix + "trial1.png")));
+  EXPECT_FALSE(fs::exists(dir / "out" / (prefix + "trial2.png")));
+  const std::string csv = test::read_bytes(dir / "out" / "trials.csv");
+  const auto trials = store.trials_of_session(fixture.session_id);
+  EXPECT_EQ(count(csv, "\n"), trials.size());  // the header and every trial but the damaged one
 }
 
 TEST_F(ReportCommand, DamagedOrMissingDatabaseIsRefusedAndLeftAlone) {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 
 #include "app/gui/screens/review_pictures.hpp"
 #include "engine/core/error.hpp"
@@ -51,8 +52,15 @@ class ReportWriter {
     const TaskKit& kit = kits_.kit_of(record.session);
     report.extractor_notice = kit.extractor_notice();
     const review::SessionReview review(kit, std::move(record));
+    const std::string where = store.database_path().string() + ": session " + std::to_string(row.session_id);
     std::vector<review::TrialReview> trials;
-    for (const auto& t : review.record().trials) trials.push_back(review.trial(t.seq));
+    for (const auto& t : review.record().trials) {
+      try {
+        trials.push_back(review.trial(t.seq));
+      } catch (const InputError& e) {
+        result_.problems.push_back(where + ", trial " + std::to_string(t.seq) + " left out: " + one_line(e.what()));
+      }
+    }
     const std::string prefix = "session" + std::to_string(row.session_id) + "_";
     for (const auto& t : trials) {
       report.trials.push_back({row.session_id, t});
@@ -61,16 +69,28 @@ class ReportWriter {
                                           request_.image_width, request_.image_height),
           prefix + "trial" + std::to_string(t.stored.seq) + ".png", t.label));
     }
-    for (const auto& group : review::before_after_groups(review.record()))
+    // A damaged row takes out only the picture that reads it; output errors still end the report.
+    std::vector<review::BeforeAfterGroup> groups;
+    try {
+      groups = review::before_after_groups(review.record());
+    } catch (const InputError& e) {
+      result_.problems.push_back(where + ", before/after pictures left out: " + one_line(e.what()));
+    }
+    for (const auto& group : groups)
       report.before_after.push_back(save(
           review_view::render_before_after_image(context(), before_after_picture(group, trials),
                                                  "Before / after: " + group.title, before_after_lines(group, trials),
                                                  request_.image_width, request_.image_height),
           prefix + "before_after_" + group.family + ".png", "Before / after: " + group.title));
-    const review::ExpertiseRounds rounds = review::expertise_rounds(review.kit(), review.record());
-    if (!rounds.rounds.empty())
+    std::optional<review::ExpertiseRounds> rounds;
+    try {
+      rounds = review::expertise_rounds(review.kit(), review.record());
+    } catch (const InputError& e) {
+      result_.problems.push_back(where + ", expertise chart left out: " + one_line(e.what()));
+    }
+    if (rounds && !rounds->rounds.empty())
       report.expertise_chart = save(review_view::render_expertise_chart_image(
-                                        context(), expertise_chart(rounds), "Expertise per skill across rounds",
+                                        context(), expertise_chart(*rounds), "Expertise per skill across rounds",
                                         request_.image_width),
                                     prefix + "expertise.png", "Expertise per skill across rounds");
     try {

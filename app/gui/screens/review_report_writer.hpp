@@ -22,6 +22,9 @@ struct ReportResult {
   std::vector<std::filesystem::path> files;  // every file written, report.html last
   int sessions = 0;
   int trials = 0;
+  // Damaged rows left out of the report, one line each ("<db>: session 1, trial 2 left out: ..."); the rest
+  // is written. The command exits non-zero when there are any.
+  std::vector<std::string> problems;
 };
 
 // Throws InputError (one line naming the file) for a missing/damaged database, an unknown learner or
