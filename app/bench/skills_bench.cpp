@@ -1,4 +1,4 @@
-// Benchmarks of CompILE (issue 5): training-iteration time at the paper's parking and writing configs and
+// Benchmarks of CompILE: training-iteration time at the paper's parking and writing configs and
 // inference latency, on synthetic data shaped like the real tasks (lengths, dimensions). The reference
 // (authors' PyTorch code, same kind of machine, reference-baseline.md): parking 141-156 ms per iteration
 // (50 trajectories, T <= 29), writing 415 s per batch of 50 words, segmenting one 29-step parking

@@ -2,7 +2,7 @@
 // Turns real frame time into a whole number of fixed simulation sub-steps (1/15 s each), so the simulation
 // is deterministic whatever the frame rate. Time beyond `max_frame_seconds` in one frame is dropped rather
 // than caught up: after the window was minimised for an hour, a debugger stop or a device-lost pause, the
-// car continues from where it was instead of jumping ahead (issue 9). The caller simply does not call
+// car continues from where it was instead of jumping ahead. The caller simply does not call
 // advance() while a trial is paused.
 namespace sc::input {
 

@@ -3,7 +3,7 @@
 // schema). The trainer writes through it as a session goes; the instructor review and the export read
 // it back.
 //
-// Safety rules (issue 7 and issue 9):
+// Safety rules:
 //  - WAL journal, synchronous=FULL, foreign keys on; each record is committed in its own transaction the
 //    moment it is handed over, and a trial is committed together with its resume point.
 //  - A damaged, foreign or newer-schema file is refused with a one-line sc::InputError and never written.

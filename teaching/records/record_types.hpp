@@ -13,7 +13,7 @@
 namespace sc::records {
 
 enum class TrialKind { Pretest, Demo, Practice, Eval };
-// Where the trainer's flow is within one adaptive round (issue 7's screens).
+// Where the trainer's flow is within one adaptive round (the trainer's screens).
 enum class SessionPhase { Pretest, Diagnosis, Drills, Evaluation, Summary };
 
 std::string_view to_string(TrialKind kind);

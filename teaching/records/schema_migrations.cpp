@@ -8,7 +8,7 @@
 namespace sc::records {
 namespace {
 
-// Version 1: the schema of issue 7. Natural keys (session + seq, session + round, curriculum + index)
+// Version 1: the first schema. Natural keys (session + seq, session + round, curriculum + index)
 // are UNIQUE so that replaying a pending write after a crash can never duplicate a record.
 constexpr std::string_view kSchemaV1 = R"sql(
 CREATE TABLE learners(

@@ -1,7 +1,7 @@
 #pragma once
 // Segmentation quality of a task's skills (evaluate-skills), measured against what the tasks know:
 //  * writing: the true character boundaries of generated words; a predicted boundary counts when it lies
-//    within +-5 % of the word's length (in steps) of a not yet matched true boundary (issue 5);
+//    within +-5 % of the word's length (in steps) of a not yet matched true boundary;
 //  * parking: skill purity - for each skill, the share of its steps that reverse vs drive forward and that
 //    steer left vs right vs straight. A skill that mixes all of them teaches nothing specific.
 #include <map>

@@ -1,4 +1,4 @@
-// Storage-level crash test (issue 7): a child process records trials in a loop and is killed with
+// Storage-level crash test: a child process records trials in a loop and is killed with
 // SIGKILL in the middle of the session. Every trial it had been told was stored must be there, intact,
 // and the session must resume exactly after the last stored trial.
 #include <signal.h>

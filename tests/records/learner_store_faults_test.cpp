@@ -1,4 +1,4 @@
-// Issue 9 faults: a trial that cannot be written (disk full, read-only file or directory, locked
+// Storage faults: a trial that cannot be written (disk full, read-only file or directory, locked
 // database) is kept pending in memory and in the spill file, reported in one line, and written as soon
 // as the database allows it. Nothing is lost.
 #include <signal.h>
