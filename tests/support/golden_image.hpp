@@ -4,7 +4,8 @@
 //   EXPECT_TRUE(sc::test::matches_golden(image, "render/primitives"));
 //
 // compares with $SKILLCOACH_TEST_DATA/golden/render/primitives.png. A pixel differs when any channel differs
-// by more than 2; the check fails when more than 0.1% of the pixels differ, and then writes
+// by more than 2; the check fails when more than 24 pixels differ (the measured residual is 0 on OSMesa and
+// EGL for every golden, docs/development.md; a one-word label change differs in hundreds), and then writes
 // render_primitives.actual.png and render_primitives.diff.png into $SKILLCOACH_TEST_OUTPUT and names them in
 // the failure message. With SKILLCOACH_UPDATE_GOLDENS=1 the golden is (re)written instead and the check passes.
 #include <gtest/gtest.h>
@@ -30,8 +31,8 @@ struct ImageDifference {
 };
 
 struct GoldenTolerance {
-  int channel = 2;              // a pixel differs if any channel differs by more than this
-  double max_fraction = 0.001;  // fail if more than this fraction of pixels differ
+  int channel = 2;             // a pixel differs if any channel differs by more than this
+  std::size_t max_pixels = 24;  // fail if more pixels than this differ
 };
 
 enum class GoldenMode {
