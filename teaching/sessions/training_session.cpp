@@ -2,12 +2,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 #include "engine/core/error.hpp"
-#include "teaching/curricula/curriculum_json.hpp"
-#include "teaching/drills/drill_plan_json.hpp"
-#include "teaching/expertise/expertise_json.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
+#include "teaching/sessions/session_records.hpp"
 
 namespace sc {
 namespace {
@@ -23,6 +22,10 @@ const char* phase_words(SessionPhase phase) {
   return "?";
 }
 
+// Calls the flow's screens should never make (work of another phase, a round that does not exist): a bug
+// in the caller, not something to show a learner as an input problem.
+[[noreturn]] void misuse(const std::string& what) { throw std::logic_error("training session: " + what); }
+
 }  // namespace
 
 TrainingSession::TrainingSession(const TaskKit& kit, records::LearnerStore& store, TimestampSource now)
@@ -36,14 +39,7 @@ TrainingSession::TrainingSession(const TaskKit& kit, records::LearnerStore& stor
   select_pretest();
   const std::string started = now_();
   store_.ensure_learner(settings_.learner, started);
-  records::NewSession session;
-  session.learner = settings_.learner;
-  session.task = kit_.task();
-  session.condition = std::string(condition_key(settings_.condition));
-  session.seed = settings_.seed;
-  session.settings_json = settings_to_json(settings_).dump();
-  session.started = started;
-  session_id_ = store_.begin_session(session);
+  session_id_ = store_.begin_session(session_record(settings_, kit_.task(), started));
   rounds_.resize(1);
 }
 
@@ -88,30 +84,19 @@ int TrainingSession::test_count() const {
   return phase() == SessionPhase::Pretest ? static_cast<int>(pretest_pool_.size()) : settings_.eval_count;
 }
 
-const Json& TrainingSession::test_scenario() const {
+const ExpertDemo& TrainingSession::test_expert() const {
+  const std::size_t item = static_cast<std::size_t>(item_index());
   if (phase() == SessionPhase::Pretest)
-    return kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(static_cast<std::size_t>(item_index())))]
-        .scenario;
+    return kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(item))];
   require_phase(SessionPhase::Evaluation, "a test scenario");
-  return eval_experts().at(static_cast<std::size_t>(item_index())).scenario;
+  return eval_experts().at(item);
 }
 
-const Json& TrainingSession::test_expert_trial() const {
-  if (phase() == SessionPhase::Pretest)
-    return kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(static_cast<std::size_t>(item_index())))]
-        .trial;
-  require_phase(SessionPhase::Evaluation, "a test scenario");
-  return eval_experts().at(static_cast<std::size_t>(item_index())).trial;
-}
+const Json& TrainingSession::test_scenario() const { return test_expert().scenario; }
 
-double TrainingSession::test_time_limit() const {
-  if (phase() == SessionPhase::Pretest)
-    return kit_.time_limit_seconds(
-        kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(static_cast<std::size_t>(item_index())))]
-            .steps.length());
-  require_phase(SessionPhase::Evaluation, "a test time limit");
-  return kit_.time_limit_seconds(eval_experts().at(static_cast<std::size_t>(item_index())).steps.length());
-}
+const Json& TrainingSession::test_expert_trial() const { return test_expert().trial; }
+
+double TrainingSession::test_time_limit() const { return kit_.time_limit_seconds(test_expert().steps.length()); }
 
 records::SessionProgress TrainingSession::after_test_trial() const {
   records::SessionProgress next = progress_;
@@ -125,7 +110,7 @@ records::SessionProgress TrainingSession::after_test_trial() const {
 
 SubmittedTrial TrainingSession::submit_test_trial(const Json& trial, const TrialTimes& times) {
   if (phase() != SessionPhase::Pretest && phase() != SessionPhase::Evaluation)
-    throw InputError("training session", std::string("a test trial was submitted during ") + phase_words(phase()));
+    misuse(std::string("a test trial was submitted during ") + phase_words(phase()));
   const bool pretest = phase() == SessionPhase::Pretest;
   const double reward = kit_.reward_of(trial);
   const records::SessionProgress next = after_test_trial();
@@ -202,29 +187,8 @@ void TrainingSession::analyse() {
   analysis_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const RoundState& st = state(round());
   const std::string created = now_();
-  records::DiagnosisRecord diagnosis;
-  diagnosis.session_id = session_id_;
-  diagnosis.round = round();
-  diagnosis.expertise_json = expertise_to_json(st.diagnosis).dump();
-  diagnosis.targets_json = Json(st.diagnosis.targets).dump();
-  diagnosis.extractor = kit_.extractor().name();
-  diagnosis.created = created;
-  store_.save_diagnosis(diagnosis);
-  records::CurriculumRecord curriculum;
-  curriculum.session_id = session_id_;
-  curriculum.round = round();
-  curriculum.condition = std::string(condition_key(settings_.condition));
-  curriculum.items_json = curriculum_to_json(st.curriculum).dump();
-  for (std::size_t i = 0; i < st.curriculum.items.size(); ++i) {
-    const PracticeItem& item = st.curriculum.items[i];
-    curriculum.drills.push_back({static_cast<int>(i), Json(item.material.skills()).dump(),
-                                 Json{{"plan", drill_plan_to_json(item.material)},
-                                      {"sessions", item.sessions},
-                                      {"steps", item.steps()}}
-                                     .dump()});
-  }
-  curriculum.created = created;
-  store_.save_curriculum(curriculum);
+  store_.save_diagnosis(diagnosis_record(session_id_, round(), st.diagnosis, kit_.extractor().name(), created));
+  store_.save_curriculum(curriculum_record(session_id_, round(), settings_.condition, st.curriculum, created));
   records::SessionProgress next{round(), SessionPhase::Drills, 0};
   if (practice_slot_count() == 0) next.phase = SessionPhase::Evaluation;
   set_progress(next, true);
@@ -232,13 +196,13 @@ void TrainingSession::analyse() {
 
 const ExpertiseEstimate& TrainingSession::diagnosis() const {
   const RoundState& st = state(round());
-  if (!st.analysed) throw InputError("training session", "the diagnosis is not made yet");
+  if (!st.analysed) misuse("the diagnosis is not made yet");
   return st.diagnosis;
 }
 
 const Curriculum& TrainingSession::curriculum() const {
   const RoundState& st = state(round());
-  if (!st.analysed) throw InputError("training session", "the curriculum is not made yet");
+  if (!st.analysed) misuse("the curriculum is not made yet");
   return st.curriculum;
 }
 
@@ -305,9 +269,9 @@ SubmittedTrial TrainingSession::submit_practice(const Json& trial, const TrialTi
 
 SubmittedTrial TrainingSession::submit_extra_practice(int item, const Json& trial, const TrialTimes& times) {
   if (phase() != SessionPhase::Drills && phase() != SessionPhase::Evaluation)
-    throw InputError("training session", std::string("an extra practice trial during ") + phase_words(phase()));
+    misuse(std::string("an extra practice trial during ") + phase_words(phase()));
   if (item < 0 || item >= static_cast<int>(curriculum().items.size()))
-    throw InputError("training session", "practice item " + std::to_string(item) + " does not exist");
+    misuse("practice item " + std::to_string(item) + " does not exist");
   const double reward = kit_.drill_attempt_reward(drill(item), trial);
   SubmittedTrial result = store_trial(records::TrialKind::Practice, item, trial, reward, times, progress_);
   state(round()).practice.emplace_back(item, trial);
@@ -347,8 +311,7 @@ std::map<int, int> TrainingSession::practice_per_skill() const {
 
 void TrainingSession::start_next_round() {
   require_phase(SessionPhase::Summary, "another round");
-  if (!can_continue())
-    throw InputError("training session", "another round is offered in the Adaptive condition only");
+  if (!can_continue()) misuse("another round is offered in the Adaptive condition only");
   rounds_.resize(static_cast<std::size_t>(round()) + 1);
   set_progress({round() + 1, SessionPhase::Diagnosis, 0}, true);
 }
@@ -362,30 +325,22 @@ void TrainingSession::finish() {
 const std::vector<Json>& TrainingSession::eval_trials(int r) const { return state(r).eval; }
 
 TrainingSession::RoundState& TrainingSession::state(int r) {
-  if (r < 1) throw InputError("training session", "round " + std::to_string(r) + " does not exist");
+  if (r < 1) misuse("round " + std::to_string(r) + " does not exist");
   if (static_cast<int>(rounds_.size()) < r) rounds_.resize(static_cast<std::size_t>(r));
   return rounds_[static_cast<std::size_t>(r - 1)];
 }
 
 const TrainingSession::RoundState& TrainingSession::state(int r) const {
   if (r < 1 || r > static_cast<int>(rounds_.size()))
-    throw InputError("training session", "round " + std::to_string(r) + " has not started");
+    misuse("round " + std::to_string(r) + " has not started");
   return rounds_[static_cast<std::size_t>(r - 1)];
 }
 
 SubmittedTrial TrainingSession::store_trial(records::TrialKind kind, std::optional<int> drill, const Json& trial,
                                             std::optional<double> score, const TrialTimes& times,
                                             std::optional<records::SessionProgress> after) {
-  records::TrialRecord record;
-  record.session_id = session_id_;
-  record.kind = kind;
-  record.round = round();
-  record.drill_index = drill;
-  record.task = kit_.task();
-  record.scenario_json = trial.contains("scenario") ? trial.at("scenario").dump() : "{}";
-  record.trajectory_json = trial.dump();
-  record.score = score;
-  record.device = settings_.device;
+  records::TrialRecord record =
+      trial_record({session_id_, kind, round(), drill}, kit_.task(), settings_.device, trial, score);
   record.started = times.started.empty() ? now_() : times.started;
   record.finished = times.finished.empty() ? now_() : times.finished;
   record.progress_after = after;
@@ -402,8 +357,7 @@ void TrainingSession::set_progress(records::SessionProgress progress, bool save)
 
 void TrainingSession::require_phase(SessionPhase phase, const char* what) const {
   if (progress_.phase != phase)
-    throw InputError("training session", std::string(what) + " belongs to " + phase_words(phase) + ", the session is at " +
-                                             phase_words(progress_.phase));
+    misuse(std::string(what) + " belongs to " + phase_words(phase) + ", the session is at " + phase_words(progress_.phase));
 }
 
 }  // namespace sc

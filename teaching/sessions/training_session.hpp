@@ -44,6 +44,8 @@ struct SubmittedTrial {
   records::SaveResult saved;    // kept in the database, or pending with a message to show
 };
 
+// Work of another phase (analyse() during the pre-test, a practice trial at the summary, ...) is a bug in
+// the caller and throws std::logic_error; bad input (settings, stored data, trial documents) InputError.
 class TrainingSession {
  public:
   // Creates the learner (if new) and the session in `store`. Throws InputError for bad settings, an empty
@@ -68,6 +70,7 @@ class TrainingSession {
   std::vector<Json> pretest_scenarios() const;
   const std::vector<ExpertDemo>& eval_experts() const;  // this round's fresh scenarios with expert trials
   int test_count() const;                 // trials of the current test phase
+  const ExpertDemo& test_expert() const;  // the current test item's scenario and expert trial
   const Json& test_scenario() const;      // the scenario to play now
   const Json& test_expert_trial() const;  // its expert trial (for the "after" picture; not shown during tests)
   double test_time_limit() const;         // seconds, proportional to the expert's length

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -248,18 +250,20 @@ TEST(TrainingSession, NonAdaptiveConditionsEndAfterOneRound) {
   TrainingSession s(kit, store, toy_settings(StudyCondition::FullTrajectory), fixed_clock());
   play_until(s, SessionPhase::Summary);
   EXPECT_FALSE(s.can_continue());
-  EXPECT_THROW(s.start_next_round(), InputError);
+  EXPECT_THROW(s.start_next_round(), std::logic_error);
 }
 
 TEST(TrainingSession, RefusesWorkOfAnotherPhase) {
   const test::ToyTaskKit kit;
   records::LearnerStore store(fresh_dir("phases"));
   TrainingSession s(kit, store, toy_settings(), fixed_clock());
-  EXPECT_THROW(s.analyse(), InputError);
-  EXPECT_THROW(s.submit_practice(test::toy_trial(0, {1}), {}), InputError);
-  EXPECT_THROW((void)s.summary(), InputError);
+  // A caller's bug, not bad input: never shown to a learner as an input problem.
+  EXPECT_THROW(s.analyse(), std::logic_error);
+  EXPECT_THROW(s.submit_practice(test::toy_trial(0, {1}), {}), std::logic_error);
+  EXPECT_THROW((void)s.summary(), std::logic_error);
   play_until(s, SessionPhase::Diagnosis);
-  EXPECT_THROW(s.submit_test_trial(test::toy_trial(0, {1}), {}), InputError);
+  EXPECT_THROW(s.submit_test_trial(test::toy_trial(0, {1}), {}), std::logic_error);
+  EXPECT_THROW((void)s.curriculum(), std::logic_error);
 }
 
 // Stops at every point of a session, forgets the in-memory session and resumes from the database: the
