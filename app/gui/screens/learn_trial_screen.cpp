@@ -1,8 +1,8 @@
-// One trial of the trainer, whatever the phase: pre-test and evaluation (no help, countdown, time limit,
-// then the score), and drills (first a demo — the ghost car drives the drill while the stick gauge shows the
-// expert's inputs — then the learner practises with the ghost path and their own trail; score, then "try
-// again" or "next"). Every finished trial goes to the TrainingSession at once, which commits it to the
-// learner database. Esc / gamepad Start pauses; an unplugged gamepad pauses with a message until a device
+// One parking trial of the trainer, whatever the phase: pre-test and evaluation (no help, countdown, time
+// limit, then the score), and drills (first a demo — the ghost car drives the drill while the stick gauge
+// shows the expert's inputs — then the learner practises with the ghost path and their own trail; score,
+// then "one more" or "next"). What to play and where a finished trial goes is LearnTrialController's; this
+// screen drives and draws. Esc / gamepad Start pauses; an unplugged gamepad pauses with a message until a device
 // is back, and the trial continues where it was (nothing is lost). Writing trials have their own screen
 // (learn_write_trial_screen.hpp), which this registration hands out when the task is writing.
 #include <imgui.h>
@@ -16,6 +16,7 @@
 #include "app/gui/screen.hpp"
 #include "app/gui/screens/drive_input.hpp"
 #include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_trial_controller.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "app/gui/screens/learn_write_trial_screen.hpp"
 #include "engine/core/error.hpp"
@@ -33,11 +34,12 @@ constexpr int kHeadlessPreRollSteps = 8;
 
 enum class Stage { countdown, demo, driving, result };
 
-class LearnTrialScreen final : public Screen {
+class LearnParkingTrialScreen final : public Screen {
  public:
-  explicit LearnTrialScreen(AppServices& services)
+  explicit LearnParkingTrialScreen(AppServices& services)
       : services_(services),
         flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Drills) : learn_flow(services)),
+        trials_(flow_),
         input_(services.device) {
     if (!flow_.session()) return;
     prepare();
@@ -91,25 +93,16 @@ class LearnTrialScreen final : public Screen {
  private:
   TrainingSession& session() { return *flow_.session(); }
 
-  // Sets up the run for the session's current phase and item.
+  // Sets up the run for the controller's next trial.
   void prepare() {
-    TrainingSession& s = session();
+    const LearnTrialController::Trial& trial = trials_.prepare();
+    const ParkingTrial reference = parse_parking_trial(trial.reference, trial.drill ? "drill" : "expert trial");
+    scenario_ = reference.scenario;
+    expert_actions_ = reference.actions;
     ghost_.reset();
-    demo_pending_ = false;
-    if (s.phase() == SessionPhase::Drills || retry_item_) {
-      item_ = retry_item_ ? *retry_item_ : s.current_item();
-      const ParkingTrial drill = parse_parking_trial(s.kit().drill_trial(s.drill(item_)), "drill");
-      scenario_ = drill.scenario;
-      expert_actions_ = drill.actions;
-      ghost_ = simulate_parking_path(drill);
-      time_limit_ = s.drill_time_limit(item_);
-      demo_pending_ = !retry_item_;
-    } else {
-      const ParkingTrial expert = parse_parking_trial(s.test_expert_trial(), "expert trial");
-      scenario_ = expert.scenario;
-      expert_actions_ = expert.actions;
-      time_limit_ = s.test_time_limit();
-    }
+    if (trial.drill) ghost_ = simulate_parking_path(reference);
+    time_limit_ = trial.time_limit;
+    demo_pending_ = trial.demo_first;
     drive_ = std::make_unique<LiveParkingDrive>(scenario_);
     started_ = records::utc_timestamp_now();
     set_stage(Stage::countdown);
@@ -132,43 +125,18 @@ class LearnTrialScreen final : public Screen {
   bool demo_finished() const { return static_cast<std::size_t>(drive_->control_steps()) >= expert_actions_.size(); }
 
   void end_run() {
-    TrainingSession& s = session();
     const std::string device = device_key(services_.device);
     const Json trial = parking_trial_to_json(drive_->to_trial(stage_ == Stage::demo ? "expert" : "learner", device));
     const TrialTimes times{started_, records::utc_timestamp_now()};
-    try {
-      if (stage_ == Stage::demo) {
-        note_ = s.record_demo(item_, trial, times).message;
-        demo_pending_ = false;
-        drive_ = std::make_unique<LiveParkingDrive>(scenario_);
-        set_stage(Stage::countdown);
-        return;
-      }
-      result_title_ = learn_phase_title(s, false, retry_item_.has_value() || ghost_.has_value());  // before it moves on
-      SubmittedTrial kept;
-      if (retry_item_)
-        kept = s.submit_extra_practice(*retry_item_, trial, times);
-      else if (s.phase() == SessionPhase::Drills)
-        kept = s.submit_practice(trial, times);
-      else
-        kept = s.submit_test_trial(trial, times);
-      last_reward_ = kept.reward;
-      note_ = kept.saved.message;
-      last_item_ = item_;
-      was_practice_ = retry_item_.has_value() || ghost_.has_value();
-    } catch (const InputError& e) {
-      note_ = e.what();
+    if (stage_ == Stage::demo) {
+      trials_.record_demo(trial, times);
+      demo_pending_ = false;
+      drive_ = std::make_unique<LiveParkingDrive>(scenario_);
+      set_stage(Stage::countdown);
+      return;
     }
-    retry_item_.reset();
+    trials_.submit(trial, times);
     set_stage(Stage::result);
-  }
-
-  void next(UiContext& ui) {
-    TrainingSession& s = session();
-    if (s.phase() == SessionPhase::Pretest || s.phase() == SessionPhase::Drills || s.phase() == SessionPhase::Evaluation)
-      prepare();
-    else
-      ui.navigator.go_to(screen_for_phase(s.phase()));
   }
 
   void draw_scene(UiContext& ui, const PixelViewport& viewport) {
@@ -205,7 +173,7 @@ class LearnTrialScreen final : public Screen {
   void draw_header(UiContext& ui) {
     const float s = ui.ui_scale;
     learn_ui::begin_header_bar(ui, "learn_trial_header",
-                               stage_ == Stage::result ? result_title_
+                               stage_ == Stage::result ? trials_.result_title()
                                                        : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::driving)
       ImGui::Text("Time left %.1f s", std::max(0.0, time_limit_ - drive_->time_seconds()));
@@ -238,31 +206,17 @@ class LearnTrialScreen final : public Screen {
   }
 
   void draw_result(UiContext& ui) {
-    TrainingSession& s = session();
     learn_ui::begin_card(ui, "learn_result", 460.0f, 0.3f);
     learn_ui::title(ui, drive_->succeeded() ? "Parked!" : drive_->collided() ? "Bump!" : "Time is up");
-    ImGui::Text("Score %s  (0 is the expert's result)", learn_ui::reward_text(last_reward_).c_str());
-    if (!note_.empty()) learn_ui::muted_wrapped(note_.c_str());
-    if (was_practice_ && ImGui::Button("One more on this skill", ImVec2(-1, 40 * ui.ui_scale))) {
-      retry_item_ = last_item_;
-      prepare();
-    } else if (learn_ui::primary_button(ui, s.phase() == SessionPhase::Drills || s.phase() == SessionPhase::Pretest ||
-                                                    s.phase() == SessionPhase::Evaluation
-                                                ? "Next"
-                                                : "Continue") ||
-               confirm_) {
-      next(ui);
-    }
-    if (was_practice_ && s.phase() == SessionPhase::Drills &&
-        ImGui::Button("End practice: go to the final test", ImVec2(-1, 40 * ui.ui_scale))) {
-      s.skip_practice();
-      next(ui);
-    }
+    ImGui::Text("Score %s  (0 is the expert's result)", learn_ui::reward_text(trials_.last_reward()).c_str());
+    if (!trials_.note().empty()) learn_ui::muted_wrapped(trials_.note().c_str());
+    if (trials_.draw_result_buttons(ui, confirm_) == LearnTrialController::Choice::another_trial) prepare();
     learn_ui::end_card();
   }
 
   AppServices& services_;
   LearnFlow& flow_;
+  LearnTrialController trials_;
   DriveInput input_;
   ParkingScenario scenario_;
   std::vector<ParkingAction> expert_actions_;
@@ -276,20 +230,13 @@ class LearnTrialScreen final : public Screen {
   bool paused_ = false;
   bool demo_pending_ = false;
   bool confirm_ = false;
-  bool was_practice_ = false;
-  int item_ = 0;
-  int last_item_ = 0;
-  std::optional<int> retry_item_;
-  double last_reward_ = 0;
-  std::string note_;
   std::string started_;
-  std::string result_title_;  // the header of the trial whose result is shown
 };
 
 const ScreenRegistration kReg{{"learn_trial", "Trainer: pre-test, drill demo and practice, evaluation trial",
                                [](AppServices& services) -> std::unique_ptr<Screen> {
                                  if (services.task == TaskKind::writing) return make_learn_write_trial_screen(services);
-                                 return std::make_unique<LearnTrialScreen>(services);
+                                 return std::make_unique<LearnParkingTrialScreen>(services);
                                }}};
 
 }  // namespace

@@ -3,8 +3,8 @@
 // had and its writing study did not: a demo where the ghost pen writes the drill first, then practice over
 // the drill's ribbon. The pen clock starts at the first touch, so reading the word is free. Esc pauses a demo
 // or a trace: the ghost pen stops, the pen's clock and time limit stop (CanvasPenInput leaves the paused span
-// out of the trace's times) and ink is ignored until Esc again. Every finished trial goes to the
-// TrainingSession at once, which commits it to the database.
+// out of the trace's times) and ink is ignored until Esc again. What to play and where a finished trial goes
+// is LearnTrialController's; this screen writes and draws.
 #include "app/gui/screens/learn_write_trial_screen.hpp"
 
 #include <imgui.h>
@@ -17,6 +17,7 @@
 #include "app/gui/navigator.hpp"
 #include "app/gui/screens/free_write_session.hpp"
 #include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_trial_controller.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
 #include "engine/writing/writing_trial.hpp"
@@ -41,6 +42,7 @@ class LearnWriteTrialScreen final : public Screen {
   explicit LearnWriteTrialScreen(AppServices& services)
       : services_(services),
         flow_(services.headless ? learn_flow_for_screenshot(services, SessionPhase::Drills) : learn_flow(services)),
+        trials_(flow_),
         pen_(writing::PenRecorderRules{}) {
     if (!flow_.session()) return;
     prepare(0.0);
@@ -76,26 +78,17 @@ class LearnWriteTrialScreen final : public Screen {
  private:
   TrainingSession& session() { return *flow_.session(); }
 
-  // Sets up the trial for the session's current phase and item (or the drill being retried).
+  // Sets up the controller's next trial.
   void prepare(double now) {
-    TrainingSession& s = session();
-    const bool drill = s.phase() == SessionPhase::Drills || retry_item_.has_value();
-    demo_pending_ = false;
-    target_.clear();
-    if (drill) {
-      item_ = retry_item_ ? *retry_item_ : s.current_item();
-      const PlayableDrill& playable = s.drill(item_);
-      reference_doc_ = s.kit().drill_trial(playable);
-      target_ = playable.plan.target_skill >= 0 ? "Practises " + s.kit().describe_skill(playable.plan.target_skill) + "." : "";
-      time_limit_ = s.drill_time_limit(item_);
-      demo_pending_ = !retry_item_;
-    } else {
-      reference_doc_ = s.test_expert_trial();
-      time_limit_ = s.test_time_limit();
-    }
-    reference_ = writing::parse_writing_trial(reference_doc_, drill ? "drill" : "expert trial");
-    is_drill_ = drill;
-    const bool on_release = drill ? single_stroke(reference_.points) : writing::trial_ends_on_release(reference_.scenario.alphabet);
+    const LearnTrialController::Trial& trial = trials_.prepare();
+    reference_doc_ = trial.reference;
+    reference_ = writing::parse_writing_trial(reference_doc_, trial.drill ? "drill" : "expert trial");
+    is_drill_ = trial.drill;
+    target_ = trial.target;
+    time_limit_ = trial.time_limit;
+    demo_pending_ = trial.demo_first;
+    const bool on_release =
+        trial.drill ? single_stroke(reference_.points) : writing::trial_ends_on_release(reference_.scenario.alphabet);
     pen_ = writing_view::CanvasPenInput({on_release, time_limit_});
     stage_started_ = now;
     paused_ = false;
@@ -133,11 +126,7 @@ class LearnWriteTrialScreen final : public Screen {
   }
 
   void end_demo(double now) {
-    try {
-      note_ = session().record_demo(item_, reference_doc_, {started_, records::utc_timestamp_now()}).message;
-    } catch (const InputError& e) {
-      note_ = e.what();
-    }
+    trials_.record_demo(reference_doc_, {started_, records::utc_timestamp_now()});
     demo_pending_ = false;
     stage_ = Stage::writing;
     stage_started_ = now;
@@ -167,32 +156,11 @@ class LearnWriteTrialScreen final : public Screen {
     trial.device = device_key(services_.device);
     end_reason_ = pen_.end_reason();
     score_ = writing::score_writing(reference_.points, filled.points);
-    result_title_ = learn_phase_title(session(), false, is_drill_);  // before the session moves on
-    submit(writing::writing_trial_json(trial));
+    const std::string now_text = records::utc_timestamp_now();
+    trials_.submit(writing::writing_trial_json(trial), {started_.empty() ? now_text : started_, now_text});
     started_.clear();
     stage_ = Stage::result;
     stage_started_ = now;
-  }
-
-  void submit(const Json& trial) {
-    TrainingSession& s = session();
-    const TrialTimes times{started_.empty() ? records::utc_timestamp_now() : started_, records::utc_timestamp_now()};
-    try {
-      SubmittedTrial kept;
-      if (retry_item_)
-        kept = s.submit_extra_practice(*retry_item_, trial, times);
-      else if (s.phase() == SessionPhase::Drills)
-        kept = s.submit_practice(trial, times);
-      else
-        kept = s.submit_test_trial(trial, times);
-      last_reward_ = kept.reward;
-      note_ = kept.saved.message;
-      last_item_ = item_;
-      was_practice_ = is_drill_;
-    } catch (const InputError& e) {
-      note_ = e.what();
-    }
-    retry_item_.reset();
   }
 
   void draw_canvas(UiContext& ui, const Camera2D& camera) {
@@ -210,7 +178,7 @@ class LearnWriteTrialScreen final : public Screen {
 
   void draw_header(UiContext& ui) {
     learn_ui::begin_header_bar(ui, "learn_write_header",
-                               stage_ == Stage::result ? result_title_
+                               stage_ == Stage::result ? trials_.result_title()
                                                        : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::demo)
       ImGui::TextUnformatted("Watch the ghost pen: where each stroke starts, its direction, where the pen lifts.");
@@ -252,30 +220,12 @@ class LearnWriteTrialScreen final : public Screen {
   void draw_result(UiContext& ui) {
     learn_ui::begin_card(ui, "learn_write_result", 460.0f, 0.75f);
     learn_ui::title(ui, score_ && score_->score > -0.25 ? "Well written!" : "Written");
-    ImGui::Text("Score %s", learn_ui::reward_text(last_reward_).c_str());
+    ImGui::Text("Score %s", learn_ui::reward_text(trials_.last_reward()).c_str());
     if (score_) ImGui::Text("Recall %.2f  ·  precision %.2f  ·  %s", score_->recall, score_->precision, trial_end_text(end_reason_));
-    if (!note_.empty()) learn_ui::muted_wrapped(note_.c_str());
+    if (!trials_.note().empty()) learn_ui::muted_wrapped(trials_.note().c_str());
     const bool confirm = ui.time_seconds > stage_started_ && learn_ui::confirm_pressed(ui.input);
-    if (was_practice_ && ImGui::Button("One more on this skill", ImVec2(-1, 40 * ui.ui_scale))) {
-      retry_item_ = last_item_;
-      prepare(ui.time_seconds);
-    } else if (learn_ui::primary_button(ui, "Next") || confirm) {
-      next(ui);
-    }
-    if (was_practice_ && session().phase() == SessionPhase::Drills &&
-        ImGui::Button("End practice: go to the final test", ImVec2(-1, 40 * ui.ui_scale))) {
-      session().skip_practice();
-      next(ui);
-    }
+    if (trials_.draw_result_buttons(ui, confirm) == LearnTrialController::Choice::another_trial) prepare(ui.time_seconds);
     learn_ui::end_card();
-  }
-
-  void next(UiContext& ui) {
-    const SessionPhase phase = session().phase();
-    if (phase == SessionPhase::Pretest || phase == SessionPhase::Drills || phase == SessionPhase::Evaluation)
-      prepare(ui.time_seconds);
-    else
-      ui.navigator.go_to(screen_for_phase(phase));
   }
 
   void draw_no_session(UiContext& ui) {
@@ -287,6 +237,7 @@ class LearnWriteTrialScreen final : public Screen {
 
   AppServices& services_;
   LearnFlow& flow_;
+  LearnTrialController trials_;
   writing_view::WritingCanvasLook look_;
   writing_view::CanvasPenInput pen_;
   Json reference_doc_;
@@ -301,15 +252,8 @@ class LearnWriteTrialScreen final : public Screen {
   double time_limit_ = 60;
   bool is_drill_ = false;
   bool demo_pending_ = false;
-  bool was_practice_ = false;
-  int item_ = 0;
-  int last_item_ = 0;
-  std::optional<int> retry_item_;
-  double last_reward_ = 0;
-  std::string note_;
   std::string started_;
-  std::string target_;        // the drill's target skill in plain words
-  std::string result_title_;  // the header of the trial whose result is shown
+  std::string target_;  // the drill's target skill in plain words
 };
 
 }  // namespace
