@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/bench_report.hpp"
+#include "app/core/bench_report.hpp"
 #include "app/cli/command_registry.hpp"
 #include "engine/core/error.hpp"
 

@@ -1,5 +1,5 @@
 // skillcoach learn: a whole training session played headless by the scripted learner
-// (app/gui/screens/learn_scripted_learner.hpp) through the same TrainingSession orchestrator the trainer's
+// (app/core/learn_scripted_learner.hpp) through the same TrainingSession orchestrator the trainer's
 // screens drive, storing every trial in the learner database as it ends. Resumes the learner's unfinished
 // session of the task when there is one. Used by the session and SIGKILL tests (the end-to-end tests through
 // the screens run `skillcoach --script`), and handy to fill a database for the instructor review.
@@ -12,7 +12,7 @@
 #include <thread>
 
 #include "app/cli/command_registry.hpp"
-#include "app/gui/screens/learn_scripted_learner.hpp"
+#include "app/core/learn_scripted_learner.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"

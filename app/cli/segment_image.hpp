@@ -8,7 +8,7 @@
 #include "engine/render/draw_types.hpp"
 #include "engine/render/rgba_image.hpp"
 #include "engine/writing/writing_trial.hpp"
-#include "app/cli/skill_colors.hpp"
+#include "app/core/skill_colors.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
 namespace sc::cli {

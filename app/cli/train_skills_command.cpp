@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.hpp"
-#include "app/cli/training_progress_bar.hpp"
+#include "app/core/training_progress_bar.hpp"
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/skills/compile_trainer.hpp"

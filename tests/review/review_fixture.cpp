@@ -4,12 +4,10 @@
 
 #include <string>
 
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 
-#include "engine/core/rng.hpp"
-#include "engine/parking/parking_trial.hpp"
+#include "app/core/learn_scripted_learner.hpp"
 #include "teaching/records/learner_store.hpp"
 #include "teaching/sessions/training_session.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
@@ -18,20 +16,13 @@
 namespace sc::test {
 namespace {
 
+// The app's scripted learner, on a keyboard; `keep_actions` > 0 cuts the attempt short after that many steps.
 Json attempt(const Json& reference, double skill, std::uint64_t seed, std::size_t keep_actions = 0) {
-  ParkingTrial trial = parse_parking_trial(reference, "fixture reference");
-  if (keep_actions > 0 && trial.actions.size() > keep_actions) trial.actions.resize(keep_actions);
-  Rng rng(seed);
-  for (ParkingAction& a : trial.actions) {
-    a[0] = std::clamp(a[0] * skill, -1.0, 1.0);
-    a[1] = std::clamp(a[1] + (1.0 - skill) * rng.uniform(-0.5, 0.5), -1.0, 1.0);
-  }
-  trial.states.clear();
-  trial.rewards.clear();
-  trial.success.reset();
-  trial.source = "learner";
-  trial.device = "keyboard";
-  return parking_trial_to_json(trial);
+  Json trial = scripted_attempt(reference, skill, seed, "keyboard");
+  Json& actions = trial.at("actions");
+  if (keep_actions > 0 && actions.size() > keep_actions)
+    actions.erase(actions.begin() + static_cast<std::ptrdiff_t>(keep_actions), actions.end());
+  return trial;
 }
 
 ReviewFixture build_fixture() {

@@ -4,9 +4,7 @@
 // timestamps, written through the real TrainingSession and LearnerStore. Built once per test process into
 // $SKILLCOACH_TEST_OUTPUT/review/<name>/ (deterministic: same bytes of content every time).
 //
-// The app's scripted learner (app/gui/screens/learn_scripted_learner.cpp) cannot be linked by tests, so the
-// same idea is repeated here in a few lines: the reference trial's steering scaled by the learner's skill,
-// the throttle jittered by a seeded sc::Rng.
+// The learner is the app's scripted learner (app/core/learn_scripted_learner.hpp, linked from app_core).
 #include <cstdint>
 #include <filesystem>
 

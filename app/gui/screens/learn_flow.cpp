@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "app/gui/screens/learn_scripted_learner.hpp"
+#include "app/core/learn_scripted_learner.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 

@@ -1,4 +1,4 @@
-#include "app/cli/skill_colors.hpp"
+#include "app/core/skill_colors.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "app/cli/training_progress_bar.hpp"
+#include "app/core/training_progress_bar.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "app/gui/screens/learn_scripted_learner.hpp"
+#include "app/core/learn_scripted_learner.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Colours of `segment --png`: by first appearance in the picture, distinct for up to 12 skills.
-#include "app/cli/skill_colors.hpp"
+#include "app/core/skill_colors.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The markdown writer of `skillcoach bench`: statistics, number formatting and the report layout, with
 // made-up samples (nothing is run or timed here).
-#include "app/cli/bench_report.hpp"
+#include "app/core/bench_report.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "app/cli/bench_report.hpp"
+#include "app/core/bench_report.hpp"
 
 #include <sys/utsname.h>
 
