@@ -46,28 +46,17 @@ CompileConfig CompileConfig::writing_defaults() {
   c.num_segments = 8;
   c.beta_s = 0.0;
   c.batch_size = 50;
-  // Writing actions are 1-px pen steps (T ~ 1250..2700 per word): far more steps than segmentation needs
-  // and the reason the reference took 415 s per batch. We resample to 8 px of path length per model step
-  // (T ~ 150..370; a 20-px connector still spans 2-3 steps, boundaries map back to exact action indices,
-  // and +-8 px is far inside the +-5 % of a ~2000-px word that evaluation tolerates). The reference's
-  // Poisson rate 250 was a mean segment of ~250 raw steps (~1.1 px each) = ~275 px; a word of 8 symbols at
-  // ~2000 px gives ~250 px per symbol; 250 px in 8-px steps is ~31: we use 30.
+  // Why each value differs from the paper's, with the measurements: docs/skills.md, "Writing model".
+  // 1-px pen steps are far more steps than segmentation needs: one model step per 8 px of path, and the
+  // reference's mean segment (~250 px) in those steps.
   c.resample_step = 8.0;
   c.prior_rate = 30.0;
-  // Trained from random weights, every configuration we tried cut the letters into strokes (boundary F1
-  // <= 0.49, docs/skills.md), although letter segments score better on CompILE's own objective at 8 px.
-  // So training starts from the places where the words stop repeating (warm start, no true boundaries
-  // involved): 60 passes over 900 words (~1100 Adam steps) with the boundaries fixed there, then free
-  // training, which early stopping may reject (measured: it does; the relaxed boundaries' Gumbel noise
-  // pulls them off the letters at either learning rate we tried, 1e-3 and 1e-4).
-  // The reference's learning rate 5e-3 and latent KL 0.1 keep the latent posterior uniform on our data
-  // (session 5, docs/skills.md): 1e-3 and no latent KL.
+  // From random weights CompILE cuts letters into strokes: start from where the words stop repeating.
+  // The paper's learning rate and latent KL keep the latent posterior uniform on our data.
   c.learning_rate = 1e-3;
   c.beta_z = 0.0;
   c.warm_start_iterations = 60;
-  // The warm start depends on the seed (measured on 1000 words: validation NLL 19.7 at seed 0, 97.5 at
-  // seed 1), so two runs, one per core, and the better is kept.
-  c.restarts = 2;
+  c.restarts = 2;  // the warm start depends on the seed: one run per core, the better kept
   c.iterations = 10;
   c.eval_interval = 2;
   c.patience = 10;
