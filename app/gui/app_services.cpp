@@ -2,8 +2,6 @@
 
 namespace sc {
 
-std::string_view to_string(TaskKind task) { return task == TaskKind::parking ? "parking" : "writing"; }
-
 std::string describe(const DeviceChoice& device) {
   switch (device.kind) {
     case DeviceKind::gamepad: return "Gamepad: " + device.gamepad_name;

@@ -7,12 +7,11 @@
 #include <string_view>
 
 #include "app/gui/gui_main.hpp"
+#include "engine/core/task_kind.hpp"
 
 namespace sc {
 
 class LearnFlow;  // app/gui/screens/learn_flow.hpp: the trainer's session, shared by its screens
-
-enum class TaskKind { parking, writing };
 
 enum class DeviceKind {
   gamepad,         // an SDL game controller (see gamepad_instance_id)
@@ -27,7 +26,6 @@ struct DeviceChoice {
   std::string gamepad_name;
 };
 
-std::string_view to_string(TaskKind task);
 std::string describe(const DeviceChoice& device);
 
 struct AppServices {

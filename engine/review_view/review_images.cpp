@@ -62,7 +62,7 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         y += imgui.fonts().bold->CalcTextSizeA(fs, 1e9f, wrap, text.title.c_str()).y + 8.0f * s;
         y = text_lines(dl, {x, y}, text.lines, wrap) + 8.0f * s;
         // What the lines mean, then one swatch per skill.
-        const bool parking = picture.task == "parking";
+        const bool parking = picture.task == TaskKind::parking;
         dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, IM_COL32(255, 226, 138, 255), 5.0f * s);
         dl.AddText({x + fs * 2.2f, y}, kText, "this trial, coloured by skill; dots: boundaries");
         y += fs * 1.35f;

@@ -59,8 +59,23 @@ Camera2D parking_camera(const std::vector<Json>& scenarios, const std::vector<st
   return fit(box, viewport);
 }
 
-void paint_background(Renderer2D& renderer, const std::string& task, const std::vector<Json>& scenarios) {
-  if (task == "writing") {
+// What sets the tasks' pictures apart, in one place (widths in world units: metres, canvas pixels).
+struct TaskLook {
+  bool paper = false;          // writing paper under everything; else the parking lot and its goals
+  float expert_ribbon = 2.0f;  // the car's width / a wide pen band
+  float before_after_ribbon = 2.0f;
+  float ghost_lane = 2.0f;     // a faint lane under the drill's dashes
+  Color ghost = kGhostDrill;   // white dashes read on the grey lot, dark ones on the paper
+  bool car_marker = true;      // the playhead is the car (with headings); else a round pen tip
+};
+
+TaskLook look_of(TaskKind task) {
+  if (task == TaskKind::parking) return {};
+  return {true, 14.0f, 12.0f, 10.0f, Color::hex(0x3b4a6b, 0.9f), false};
+}
+
+void paint_background(Renderer2D& renderer, TaskKind task, const std::vector<Json>& scenarios) {
+  if (look_of(task).paper) {
     writing_view::paint_paper(renderer);
     return;
   }
@@ -100,27 +115,26 @@ void paint_skill_path(Renderer2D& renderer, const ReviewPath& path, float width,
   }
 }
 
-void paint_expert(Renderer2D& renderer, const std::string& task, const ReviewPath& expert) {
+void paint_expert(Renderer2D& renderer, TaskKind task, const ReviewPath& expert) {
   if (expert.points.size() < 2) return;
-  const float ribbon = task == "parking" ? 2.0f : 14.0f;  // the car's width / a wide pen band
-  renderer.ghost_ribbon(expert.points, Stroke::world(ribbon), kExpertRibbon, round_style());
+  renderer.ghost_ribbon(expert.points, Stroke::world(look_of(task).expert_ribbon), kExpertRibbon, round_style());
   paint_skill_path(renderer, expert, 2.0f, 0.75f);
 }
 
-void paint_ghost(Renderer2D& renderer, const std::string& task, const ReviewPath& ghost) {
+void paint_ghost(Renderer2D& renderer, TaskKind task, const ReviewPath& ghost) {
   if (ghost.points.size() < 2) return;
   const float unit = 1.0f / renderer.camera().pixels_per_unit();
-  // White dashes read on the grey lot, dark ones on the paper.
-  const Color color = task == "writing" ? Color::hex(0x3b4a6b, 0.9f) : kGhostDrill;
-  // A faint lane as wide as the car (or a pen band) keeps the drill visible where the learner's line covers it.
-  renderer.ghost_ribbon(ghost.points, Stroke::world(task == "writing" ? 10.0f : 2.0f), color.with_alpha(0.16f), round_style());
+  const TaskLook look = look_of(task);
+  // The faint lane keeps the drill visible where the learner's line covers it.
+  renderer.ghost_ribbon(ghost.points, Stroke::world(look.ghost_lane), look.ghost.with_alpha(0.16f), round_style());
+  const Color color = look.ghost;
   renderer.dashed_polyline(ghost.points, Stroke::pixels(3.0f), {14.0f * unit, 9.0f * unit}, color, round_style());
 }
 
-void paint_marker(Renderer2D& renderer, const std::string& task, const ReviewPath& path, double position) {
+void paint_marker(Renderer2D& renderer, TaskKind task, const ReviewPath& path, double position) {
   if (path.points.empty()) return;
   const Vec2f p = position_at(path, position);
-  if (task == "parking" && !path.headings.empty()) {
+  if (look_of(task).car_marker && !path.headings.empty()) {
     paint_car(renderer, CarPose{p, heading_at(path, position), 0.0f}, reference_car_look());
   } else {
     const float r = 5.0f / renderer.camera().pixels_per_unit() * 1.6f;
@@ -156,7 +170,7 @@ float heading_at(const ReviewPath& path, double position) {
 }
 
 Camera2D trial_picture_camera(const TrialPicture& picture, PixelViewport viewport) {
-  if (picture.task == "writing") return writing_view::writing_canvas_camera(viewport);
+  if (look_of(picture.task).paper) return writing_view::writing_canvas_camera(viewport);
   std::vector<std::span<const Vec2f>> paths{picture.learner.points};
   if (picture.expert) paths.emplace_back(picture.expert->points);
   if (picture.ghost) paths.emplace_back(picture.ghost->points);
@@ -164,7 +178,7 @@ Camera2D trial_picture_camera(const TrialPicture& picture, PixelViewport viewpor
 }
 
 Camera2D before_after_camera(const BeforeAfterPicture& picture, PixelViewport viewport) {
-  if (picture.task == "writing") return writing_view::writing_canvas_camera(viewport);
+  if (look_of(picture.task).paper) return writing_view::writing_canvas_camera(viewport);
   std::vector<std::span<const Vec2f>> paths;
   for (const auto* group : {&picture.before, &picture.after, &picture.experts})
     for (const auto& p : *group) paths.emplace_back(p);
@@ -183,7 +197,7 @@ void paint_trial_picture(Renderer2D& renderer, const TrialPicture& picture) {
 void paint_before_after(Renderer2D& renderer, const BeforeAfterPicture& picture) {
   paint_background(renderer, picture.task, picture.scenarios);
   const PathStyle style = round_style();
-  const float ribbon = picture.task == "parking" ? 2.0f : 12.0f;
+  const float ribbon = look_of(picture.task).before_after_ribbon;
   for (const auto& p : picture.experts) renderer.ghost_ribbon(p, Stroke::world(ribbon), kExpertRibbon, style);
   for (const auto& p : picture.before) {
     renderer.polyline(p, Stroke::pixels(6.0f), Color::hex(0x101418, 0.6f), style);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/core/json_file.hpp"
+#include "engine/core/task_kind.hpp"
 #include "engine/render/camera2d.hpp"
 #include "engine/render/renderer2d.hpp"
 
@@ -26,7 +27,7 @@ struct ReviewPath {
 };
 
 struct TrialPicture {
-  std::string task;                  // "parking" or "writing"
+  TaskKind task = TaskKind::parking;
   Json scenario;                     // the learner's scenario (lot and goal, or the word's canvas)
   ReviewPath learner;
   std::optional<ReviewPath> expert;  // wide translucent ribbon under everything, thin skill-coloured core
@@ -35,7 +36,7 @@ struct TrialPicture {
 };
 
 struct BeforeAfterPicture {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::vector<Json> scenarios;              // every goal drawn (parking); the first sets the canvas (writing)
   std::vector<std::vector<Vec2f>> before;   // pre-test paths
   std::vector<std::vector<Vec2f>> after;    // evaluation paths

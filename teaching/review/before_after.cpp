@@ -8,8 +8,8 @@
 
 namespace sc::review {
 
-ScenarioFamily scenario_family(const std::string& task, const Json& scenario, const std::string& where) {
-  if (task == "parking") {
+ScenarioFamily scenario_family(TaskKind task, const Json& scenario, const std::string& where) {
+  if (task == TaskKind::parking) {
     const ParkingScenario s = parse_parking_scenario(JsonView(scenario, where));
     const Pose goal = goal_pose(s);
     // Spots 0..14 lie at +y, drawn below the aisle (the lot is drawn with +y down).
@@ -22,12 +22,9 @@ ScenarioFamily scenario_family(const std::string& task, const Json& scenario, co
               " of the start" + (s.reverse_in ? ", backed in" : "");
     return f;
   }
-  if (task == "writing") {
-    const writing::WritingScenario s = writing::parse_writing_scenario(JsonView(scenario, where));
-    const std::string alphabet = s.alphabet == writing::AlphabetKind::Classic ? "classic" : "balinese";
-    return {"writing-" + alphabet, alphabet + " alphabet words"};
-  }
-  throw InputError(where, "unknown task '" + task + "'");
+  const writing::WritingScenario s = writing::parse_writing_scenario(JsonView(scenario, where));
+  const std::string alphabet = s.alphabet == writing::AlphabetKind::Classic ? "classic" : "balinese";
+  return {"writing-" + alphabet, alphabet + " alphabet words"};
 }
 
 std::vector<BeforeAfterGroup> before_after_groups(const SessionRecord& record) {
@@ -42,7 +39,7 @@ std::vector<BeforeAfterGroup> before_after_groups(const SessionRecord& record) {
     } catch (const Json::exception& e) {
       throw InputError(where, std::string("is not JSON: ") + e.what());
     }
-    const ScenarioFamily family = scenario_family(t.record.task, scenario, where);
+    const ScenarioFamily family = scenario_family(parse_task_kind(t.record.task, where), scenario, where);
     BeforeAfterGroup& g = groups[family.key];
     g.family = family.key;
     g.title = family.title;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/core/json_file.hpp"
+#include "engine/core/task_kind.hpp"
 #include "teaching/review/session_record.hpp"
 
 namespace sc::review {
@@ -24,7 +25,7 @@ struct ScenarioFamily {
   std::string title;
 };
 // Throws InputError naming `where` for a scenario the task cannot read.
-ScenarioFamily scenario_family(const std::string& task, const Json& scenario, const std::string& where);
+ScenarioFamily scenario_family(TaskKind task, const Json& scenario, const std::string& where);
 
 // Groups ordered by family key; a family appears when it has a pre-test or an evaluation trial.
 std::vector<BeforeAfterGroup> before_after_groups(const SessionRecord& record);

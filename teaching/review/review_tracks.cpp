@@ -21,12 +21,12 @@ void fill_inputs(TrialTrack& track, const StepSequence& steps) {
 
 }  // namespace
 
-TrialTrack track_of(const std::string& task, const StepSequence& steps, const std::optional<VehicleState>& end) {
+TrialTrack track_of(TaskKind task, const StepSequence& steps, const std::optional<VehicleState>& end) {
   TrialTrack track;
   fill_inputs(track, steps);
   const int T = steps.length();
   if (T == 0 || steps.state_dim < 2) return track;
-  if (task == "parking") {
+  if (task == TaskKind::parking) {
     // Observation layout (reference-facts §1.6): x/100, y/100, vx/5, vy/5, cos h, sin h, goal ...
     for (int t = 0; t < T; ++t) {
       track.points.push_back({at(steps.states, t, steps.state_dim, 0) * 100.0, at(steps.states, t, steps.state_dim, 1) * 100.0});
@@ -43,18 +43,16 @@ TrialTrack track_of(const std::string& task, const StepSequence& steps, const st
       track.points.push_back({track.points.back().x + vx * track.step_seconds, track.points.back().y + vy * track.step_seconds});
       track.headings.push_back(track.headings.back());
     }
-  } else if (task == "writing") {
+  } else {
     for (int t = 0; t < T; ++t)
       track.points.push_back({at(steps.states, t, steps.state_dim, 0), at(steps.states, t, steps.state_dim, 1)});
     track.points.push_back({track.points.back().x + track.inputs.back()[0], track.points.back().y + track.inputs.back()[1]});
     track.step_seconds = 1.0 / writing::kExpertStepsPerSecond;
-  } else {
-    throw InputError("review", "unknown task '" + task + "'");
   }
   return track;
 }
 
-TrialTrack ghost_track(const std::string& task, const std::vector<std::array<double, 2>>& ghost_path,
+TrialTrack ghost_track(TaskKind task, const std::vector<std::array<double, 2>>& ghost_path,
                        const StepSequence& steps) {
   TrialTrack track = track_of(task, steps, std::nullopt);
   // The projector's ghost path is exact (it includes the final state): prefer it to the approximated end.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/core/json_file.hpp"
+#include "engine/core/task_kind.hpp"
 #include "engine/parking/vehicle_model.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
@@ -27,13 +28,13 @@ struct TrialTrack {
   int steps() const { return static_cast<int>(inputs.size()); }
 };
 
-// task: "parking" or "writing"; `steps` is kit.steps_of(doc) (the extractor's view of the same trial).
+// `steps` is kit.steps_of(doc) (the extractor's view of the same trial).
 // Parking: `end` is the car after the last step (from replaying the trial); without it the end point is
 // extrapolated from the last velocity.
-TrialTrack track_of(const std::string& task, const StepSequence& steps, const std::optional<VehicleState>& end);
+TrialTrack track_of(TaskKind task, const StepSequence& steps, const std::optional<VehicleState>& end);
 
 // The track of a projected drill's ghost path (PlayableDrill::ghost_path, one point per state).
-TrialTrack ghost_track(const std::string& task, const std::vector<std::array<double, 2>>& ghost_path,
+TrialTrack ghost_track(TaskKind task, const std::vector<std::array<double, 2>>& ghost_path,
                        const StepSequence& steps);
 
 }  // namespace sc::review

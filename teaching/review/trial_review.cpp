@@ -22,7 +22,7 @@ void parking_rewards(TrialReview& review, const StepSequence& steps, const std::
   const ParkingReplay replay = replay_parking_trial(parse_parking_trial(review.learner, where));
   std::optional<VehicleState> end;
   if (static_cast<int>(replay.steps.size()) == steps.length() && !replay.steps.empty()) end = replay.steps.back().vehicle;
-  review.learner_track = track_of("parking", steps, end);
+  review.learner_track = track_of(TaskKind::parking, steps, end);
   for (const auto& step : replay.steps) {
     review.rewards.push_back(step.reward);
     review.reward_times.push_back(step.t / static_cast<double>(parking::kControlHz));
@@ -105,7 +105,7 @@ TrialReview SessionReview::trial(int seq) const {
   if (stored.record.task != kit_.task()) throw InputError(where, "is a " + stored.record.task + " trial");
   TrialReview review;
   review.stored = stored;
-  review.task = stored.record.task;
+  review.task = parse_task_kind(stored.record.task, where);
   review.label = trial_label(stored);
   review.learner = parse_stored(stored.record.trajectory_json, where);
   const StepSequence steps = kit_.steps_of(review.learner);
@@ -124,7 +124,7 @@ TrialReview SessionReview::trial(int seq) const {
     review.expert = expert_for(scenario);
     const StepSequence expert_steps = kit_.steps_of(*review.expert);
     std::optional<VehicleState> end;
-    if (review.task == "parking") {
+    if (review.task == TaskKind::parking) {
       const ParkingReplay replay = replay_parking_trial(parse_parking_trial(*review.expert, "expert trial"));
       if (static_cast<int>(replay.steps.size()) == expert_steps.length() && !replay.steps.empty())
         end = replay.steps.back().vehicle;
@@ -133,7 +133,7 @@ TrialReview SessionReview::trial(int seq) const {
     review.expert_skills = skill_spans(kit_, kit_.extractor().extract(expert_steps));
   }
 
-  if (review.task == "parking") {
+  if (review.task == TaskKind::parking) {
     parking_rewards(review, steps, where);
   } else {
     review.learner_track = track_of(review.task, steps, std::nullopt);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/core/json_file.hpp"
+#include "engine/core/task_kind.hpp"
 #include "teaching/review/review_tracks.hpp"
 #include "teaching/review/session_record.hpp"
 #include "teaching/sessions/task_kit.hpp"
@@ -26,7 +27,7 @@ struct SkillSpan {
 
 struct TrialReview {
   records::StoredTrial stored;  // kind, round, drill index, score, device, times
-  std::string task;
+  TaskKind task = TaskKind::parking;
   Json learner;                 // the trial document as stored
   TrialTrack learner_track;
   std::vector<SkillSpan> learner_skills;  // the extractor on the learner's steps

@@ -42,7 +42,7 @@ void expect_tiling(const std::vector<SkillSpan>& spans, int steps) {
 
 TEST(TrialReview, PretestTrialHasTheExpertAndBothSegmentations) {
   const TrialReview t = fixture_review().trial(first_seq(TrialKind::Pretest));
-  EXPECT_EQ(t.task, "parking");
+  EXPECT_EQ(t.task, TaskKind::parking);
   ASSERT_TRUE(t.expert.has_value());
   EXPECT_FALSE(t.ghost.has_value());
   EXPECT_EQ(t.learner_track.points.size(), static_cast<std::size_t>(t.learner_track.steps()) + 1);

@@ -54,13 +54,13 @@ review_view::RewardPlot reward_plot(const review::TrialReview& trial) {
   review_view::RewardPlot plot;
   plot.times = trial.reward_times;
   plot.rewards = trial.rewards;
-  plot.caption = trial.task == "parking" ? "reward per control step (0 = goal)" : "score of the ink so far (0 = perfect)";
+  plot.caption = trial.task == TaskKind::parking ? "reward per control step (0 = goal)" : "score of the ink so far (0 = perfect)";
   return plot;
 }
 
 review_view::TrialImageText trial_image_text(const std::string& learner, const review::TrialReview& trial) {
   review_view::TrialImageText text;
-  text.title = learner + " - " + trial.task + " - " + trial.label;
+  text.title = learner + " - " + std::string(to_string(trial.task)) + " - " + trial.label;
   const auto& r = trial.stored.record;
   text.lines.push_back((r.score ? "score " + score_text(*r.score) : "demo (not scored), reward " + score_text(trial.reward)) +
                        ", " + std::to_string(trial.learner_track.steps()) + " steps, " + r.device);

@@ -39,14 +39,14 @@ void draw_input_stick(UiContext& ui, const review::TrialReview& trial, int step,
   const auto& inputs = trial.learner_track.inputs;
   if (inputs.empty()) return;
   double scale = 1.0;
-  if (trial.task == "writing") {  // pen steps in canvas pixels: scale by the trial's largest step
+  if (trial.task == TaskKind::writing) {  // pen steps in canvas pixels: scale by the trial's largest step
     scale = 1e-9;
     for (const auto& in : inputs) scale = std::max(scale, std::hypot(in[0], in[1]));
   }
   const auto& in = inputs[static_cast<std::size_t>(std::clamp(step, 0, static_cast<int>(inputs.size()) - 1))];
   // Parking: steering right, throttle up (forward); writing: the pen's direction on the canvas (y down).
   const float dx = static_cast<float>(std::clamp(in[0] / scale, -1.0, 1.0));
-  const float dy = static_cast<float>(std::clamp((trial.task == "parking" ? -in[1] : in[1]) / scale, -1.0, 1.0));
+  const float dy = static_cast<float>(std::clamp((trial.task == TaskKind::parking ? -in[1] : in[1]) / scale, -1.0, 1.0));
   const ImVec2 knob(centre.x + dx * radius * 0.8f, centre.y + dy * radius * 0.8f);
   dl.AddLine(centre, knob, IM_COL32(255, 226, 138, 200), 3.0f * ui.ui_scale);
   dl.AddCircleFilled(knob, radius * 0.28f, IM_COL32(255, 226, 138, 255), 24);
@@ -93,7 +93,7 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
     ImGui::SetCursorScreenPos({at.x, at.y + thumb.y + 6 * s});
   }
   ImGui::EndChild();
-  ImGui::TextDisabled(trial.task == "parking" ? "Stick: steering / throttle" : "Pen direction");
+  ImGui::TextDisabled(trial.task == TaskKind::parking ? "Stick: steering / throttle" : "Pen direction");
   const ImVec2 c = ImGui::GetCursorScreenPos();
   draw_input_stick(ui, trial, model.playback().current_step(), {c.x + radius + 4 * s, c.y + radius + 4 * s}, radius);
   ImGui::Dummy({2 * radius + 8 * s, 2 * radius + 8 * s});
