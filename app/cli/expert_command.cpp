@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/core/rng.hpp"
@@ -25,7 +26,7 @@ namespace sc::cli {
 namespace {
 
 struct ExpertArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   int count = 100;
   unsigned long long seed = 0;
   std::string variant = "classic";
@@ -123,9 +124,8 @@ int run_writing(const ExpertArgs& args) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<ExpertArgs>();
-  sub.add_option("--task", args->task, "parking (plans scenarios) or writing (gold trials of generated words, needs --out)")
-      ->required()
-      ->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task, "parking (plans scenarios) or writing (gold trials of generated words, needs --out)")
+      ->required();
   sub.add_option("--count", args->count, "Number of random scenarios (default 100)");
   sub.add_option("--seed", args->seed, "Seed of the scenario sampler (default 0)");
   sub.add_option("--variant", args->variant, "Lot variant: classic (the paper's empty lot) or parked");
@@ -133,7 +133,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--out", args->out_dir, "Directory to write one trial file per scenario (source \"expert\")");
   sub.add_option("--scenario", args->scenario_file, "Plan one scenario from a trial file or a bare scenario object");
   return [args] {
-    if (args->task == "writing") {
+    if (args->task == TaskKind::writing) {
       if (!args->scenario_file.empty() || args->variant != "classic" || args->reverse_in > 0.0)
         throw InputError("--task writing", "--scenario, --variant and --reverse-in are parking options");
       return run_writing(*args);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
@@ -18,7 +19,7 @@ namespace sc::cli {
 namespace {
 
 struct PoolArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   int count = ParkingPoolOptions{}.count;
   unsigned long long seed = ParkingPoolOptions{}.seed;
   std::string region = "whole-lot";
@@ -26,7 +27,7 @@ struct PoolArgs {
 };
 
 int run(const PoolArgs& args) {
-  if (args.task != "parking")
+  if (args.task != TaskKind::parking)
     throw InputError("--task", "only the parking pool is cached (writing pools are built from the stroke files)");
   const ParkingPoolOptions options{args.count, args.seed, parse_goal_region(args.region, "--region")};
   const auto t0 = std::chrono::steady_clock::now();
@@ -44,7 +45,7 @@ int run(const PoolArgs& args) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<PoolArgs>();
-  sub.add_option("--task", args->task, "Task whose expert pool to generate (\"parking\")")->required();
+  add_task_option(sub, args->task, "Task whose expert pool to generate (parking)")->required();
   sub.add_option("--count", args->count, "Scenarios in the pool")->capture_default_str()->check(CLI::Range(1, 100000));
   sub.add_option("--seed", args->seed, "Seed of the pool's scenarios")->capture_default_str();
   sub.add_option("--region", args->region, "Goal spots: whole-lot, or study-corner (the paper's user study)")

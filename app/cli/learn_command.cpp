@@ -12,6 +12,8 @@
 #include <thread>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/core/learn_scripted_learner.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
@@ -22,7 +24,7 @@ namespace sc::cli {
 namespace {
 
 struct LearnOptions {
-  std::string task = "parking";
+  TaskKind task = TaskKind::parking;
   std::string data_dir;
   std::string learner = "scripted learner";
   std::string condition = "adaptive";
@@ -97,8 +99,8 @@ SessionSettings new_settings(const LearnOptions& o, const records::LearnerStore&
   settings.seed = o.seed;
   settings.weak_skills = o.weak_skills;
   settings.drills_per_weak_skill = o.drills_per_weak_skill;
-  if (o.task == "parking")
-    settings.goal_region = o.lot == "auto" ? first_session_goal_region(store.session_count(o.learner, "parking"))
+  if (o.task == TaskKind::parking)
+    settings.goal_region = o.lot == "auto" ? first_session_goal_region(store.session_count(o.learner, to_string(TaskKind::parking)))
                                            : parse_goal_region(o.lot, "--lot");
   return settings;
 }
@@ -110,11 +112,10 @@ std::string lot_words(const SessionSettings& settings) {
 }
 
 int run(const LearnOptions& o) {
-  if (o.task != "parking" && o.task != "writing") throw InputError("--task", "'" + o.task + "' is not parking or writing");
-  if (o.task == "writing" && o.lot != "auto") throw InputError("--lot", "is a parking setting (writing has no lot)");
+  if (o.task == TaskKind::writing && o.lot != "auto") throw InputError("--lot", "is a parking setting (writing has no lot)");
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
-  const auto point = store.find_unfinished_session(o.learner, o.task);
+  const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
   const SessionSettings settings = point ? settings_of_session(point->session) : new_settings(o, store);
   const auto kit = make_task_kit(o.task, {}, settings.lot());
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
@@ -154,7 +155,7 @@ int run(const LearnOptions& o) {
 
 CommandRunner setup(CLI::App& sub) {
   auto o = std::make_shared<LearnOptions>();
-  sub.add_option("--task", o->task, "parking or writing")->capture_default_str();
+  add_task_option(sub, o->task, "parking (default) or writing");
   sub.add_option("--data-dir", o->data_dir, "Directory of the learner database (default: XDG data directory)");
   sub.add_option("--learner", o->learner, "Learner's name")->capture_default_str();
   sub.add_option("--condition", o->condition, "Study condition (research mode)")->capture_default_str();

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/gui/offscreen_screenshot.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "engine/parking_view/parking_trial_image.hpp"
@@ -20,7 +21,7 @@ namespace sc::cli {
 namespace {
 
 struct RenderArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string trajectory;
   std::string out;
   std::string overlay;
@@ -61,7 +62,7 @@ int render_writing(const RenderArgs& args, int width, int height) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<RenderArgs>();
-  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task)->required();
   sub.add_option("--trajectory", args->trajectory, "Trial file (JSON)")->required();
   sub.add_option("--out", args->out, "PNG file to write")->required();
   sub.add_option("--overlay", args->overlay, "Also draw the expert's plan for the same scenario")
@@ -69,7 +70,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   return [args] {
     const auto [width, height] = parse_size(args->size, "--size");
-    return args->task == "writing" ? render_writing(*args, width, height) : render_parking(*args, width, height);
+    return args->task == TaskKind::writing ? render_writing(*args, width, height) : render_parking(*args, width, height);
   };
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "engine/parking/parking_replay.hpp"
 #include "engine/parking/parking_trial.hpp"
@@ -15,7 +16,7 @@ namespace sc::cli {
 namespace {
 
 struct ReplayArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string file;
 };
 
@@ -35,11 +36,11 @@ int replay_parking(const std::string& file) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<ReplayArgs>();
-  sub.add_option("--task", args->task, "Task of the trial file (\"parking\")")->required();
+  add_task_option(sub, args->task, "Task of the trial file (parking; writing trials are not simulated)")->required();
   sub.add_option("file", args->file, "Trial file (JSON)")->required();
   return [args] {
-    if (args->task == "parking") return replay_parking(args->file);
-    throw InputError("--task", "replay supports \"parking\" only for now (got \"" + args->task + "\")");
+    if (args->task == TaskKind::parking) return replay_parking(args->file);
+    throw InputError("--task", "replay simulates parking trials only (a writing trial has nothing to re-simulate)");
   };
 }
 

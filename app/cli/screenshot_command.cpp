@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/gui/offscreen_screenshot.hpp"
 #include "app/gui/screen.hpp"
 
@@ -17,7 +18,7 @@ struct ScreenshotOptions {
   std::string out;
   std::string size = "1280x720";
   int frames = 3;
-  std::string task = "parking";
+  TaskKind task = TaskKind::parking;
 };
 
 CommandRunner setup(CLI::App& sub) {
@@ -28,15 +29,13 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--frames", options->frames, "Frames to render before capturing (at least 2)")
       ->capture_default_str()
       ->check(CLI::Range(2, 600));
-  sub.add_option("--task", options->task, "Task the trainer's screens show")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, options->task, "Task the trainer's screens show (default parking)");
   return [options] {
     ScreenshotRequest request;
     request.screen = options->screen;
     std::tie(request.width, request.height) = parse_size(options->size, "--size");
     request.frames = options->frames;
-    request.task = options->task == "writing" ? TaskKind::writing : TaskKind::parking;
+    request.task = options->task;
     write_png(options->out, render_screen_offscreen(request));
     std::printf("%s\n", options->out.c_str());
     return 0;

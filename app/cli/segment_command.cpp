@@ -12,6 +12,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/cli/segment_image.hpp"
 #include "app/gui/offscreen_screenshot.hpp"
 #include "engine/core/asset_paths.hpp"
@@ -31,7 +32,7 @@ namespace sc::cli {
 namespace {
 
 struct SegmentArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string model;
   std::string png;
   std::string size = "1280x720";
@@ -43,13 +44,15 @@ struct Chosen {
   std::string model;  // the file used, empty for the time heuristic
 };
 
-Chosen choose_extractor(const std::string& task, const std::string& model) {
-  const int state_dim = task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
-  const int action_dim = task == "parking" ? kParkingActionDim : 2;
+Chosen choose_extractor(TaskKind kind, const std::string& model) {
+  const bool parking = kind == TaskKind::parking;
+  const std::string task(to_string(kind));
+  const int state_dim = parking ? kParkingStateDim : writing::kWritingStateDim;
+  const int action_dim = parking ? kParkingActionDim : 2;
   if (!model.empty())
     return {std::make_unique<CompileExtractor>(CompileExtractor::load(model, task, state_dim, action_dim)), model};
   const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
-  const int slices = task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
+  const int slices = parking ? kParkingTimeSlices : kWritingTimeSlices;
   std::string why = "assets/models/" + task + ".pt: missing";
   if (std::filesystem::exists(shipped)) {
     try {
@@ -72,15 +75,16 @@ Json segmentation_json(const Segmentation& s) {
 
 int run(const SegmentArgs& args) {
   const Json doc = read_json_file(args.trial);
-  if (!doc.is_object() || !doc.contains("task") || doc["task"] != args.task)
-    throw InputError(args.trial, "not a " + args.task + " trial ($.task is not \"" + args.task + "\")");
+  const std::string task(to_string(args.task));
+  if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
+    throw InputError(args.trial, "not a " + task + " trial ($.task is not \"" + task + "\")");
   const Chosen chosen = choose_extractor(args.task, args.model);
 
   StepSequence steps;
   std::optional<ParkingTrial> parking;
   std::optional<writing::WritingTrial> writing_trial;
   std::vector<writing::TracePoint> points;
-  if (args.task == "parking") {
+  if (args.task == TaskKind::parking) {
     parking = parse_parking_trial(doc, args.trial);
     steps = parking_step_sequence(*parking);
   } else {
@@ -119,7 +123,7 @@ int run(const SegmentArgs& args) {
 
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<SegmentArgs>();
-  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task)->required();
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
   sub.add_option("--png", args->png, "Also draw the segments into this PNG");
   sub.add_option("--size", args->size, "PNG size WIDTHxHEIGHT")->capture_default_str();

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/cli/experiment_progress.hpp"
 #include "app/cli/simulate_writing_students.hpp"
 #include "engine/core/json_file.hpp"
@@ -37,7 +38,7 @@ struct SimulateArgs {
   bool study_corner = false;
   bool no_curve = false;
   bool quick = false;
-  std::string task = "parking";
+  TaskKind task = TaskKind::parking;
   WritingSimulateArgs writing;  // --task writing: the shared options are copied in, plus the writing-only ones
 };
 
@@ -118,7 +119,7 @@ LineChartFigure curve_chart_of(const StudentExperimentResult& result) {
 // The kit whose pool supplies diagnosis scenarios and drills: the shipped pool of the whole lot or of the
 // study corner.
 std::unique_ptr<TaskKit> experiment_kit(const SimulateArgs& args) {
-  return make_task_kit("parking", args.model, args.study_corner ? GoalRegion::StudyCorner : GoalRegion::WholeLot);
+  return make_task_kit(TaskKind::parking, args.model, args.study_corner ? GoalRegion::StudyCorner : GoalRegion::WholeLot);
 }
 
 StudentExperimentConfig config_of(const SimulateArgs& args) {
@@ -150,7 +151,7 @@ int run_writing(const SimulateArgs& args) {
 }
 
 int run(const SimulateArgs& args) {
-  if (args.task == "writing") return run_writing(args);
+  if (args.task == TaskKind::writing) return run_writing(args);
   const StudentExperimentConfig config = config_of(args);
   config.validate();
   const std::unique_ptr<TaskKit> kit = experiment_kit(args);
@@ -185,7 +186,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--rehearsal", args->rehearsal,
                  "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
       ->check(CLI::Range(0.0, 100.0));
-  sub.add_option("--task", args->task, "parking (default) or writing")->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task, "parking (default) or writing");
   sub.add_option("--finetune-epochs", args->finetune_epochs, "Fine-tuning epochs (default: parking 100, the paper; writing 10)")
       ->check(CLI::Range(1, 100000));
   sub.add_option("--finetune-lr", args->finetune_lr, "Fine-tuning learning rate (default 5e-4, the students' own)")

@@ -5,6 +5,7 @@
 
 #include "engine/core/error.hpp"
 #include "engine/core/rng.hpp"
+#include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "engine/writing/writing_trial.hpp"
 
@@ -45,10 +46,9 @@ Json writing_attempt(const Json& reference, double skill, Rng& rng, const std::s
 Json scripted_attempt(const Json& reference, double skill, std::uint64_t seed, const std::string& device) {
   skill = std::clamp(skill, 0.0, 1.0);
   Rng rng(seed);
-  const std::string task = reference.value("task", "");
-  if (task == "parking") return parking_attempt(reference, skill, rng, device);
-  if (task == "writing") return writing_attempt(reference, skill, rng, device);
-  throw InputError("scripted learner", "cannot imitate a trial of task '" + task + "'");
+  const TaskKind task = parse_task_kind(reference.value("task", ""), "scripted learner's reference: $.task");
+  if (task == TaskKind::parking) return parking_attempt(reference, skill, rng, device);
+  return writing_attempt(reference, skill, rng, device);
 }
 
 }  // namespace sc

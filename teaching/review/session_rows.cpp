@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/core/error.hpp"
+#include "engine/core/task_kind.hpp"
 #include "teaching/sessions/session_settings.hpp"
 
 namespace sc::review {
@@ -41,7 +42,8 @@ std::string format_number(double value, bool sign) {
 std::string lot_of(const records::SessionRow& session) {
   try {
     const std::optional<GoalRegion> region = settings_of_session(session).goal_region;
-    if (!region) return session.task == "parking" ? "whole lot" : "";  // recorded before lots existed
+    // Parking sessions recorded before lots existed ran on the whole lot.
+    if (!region) return task_kind_of(session.task) == TaskKind::parking ? "whole lot" : "";
     return *region == GoalRegion::StudyCorner ? "study corner" : "whole lot";
   } catch (const InputError&) {
     return "settings unreadable";  // the list still shows the session; opening it names the problem

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/error.hpp"
+#include "engine/core/task_kind.hpp"
 #include "engine/core/rng.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
@@ -211,7 +212,7 @@ const ConditionResult& StudentResult::of(StudyCondition condition) const {
 StudentExperimentResult run_student_experiment(const TaskKit& kit, const StudentExperimentConfig& config,
                                                const ExperimentProgress& progress) {
   config.validate();
-  if (kit.task() != "parking") throw InputError("synthetic students", "the experiment needs the parking kit");
+  if (task_kind_of(kit.task()) != TaskKind::parking) throw InputError("synthetic students", "the experiment needs the parking kit");
   configure_torch_threads();
   StudentExperimentResult result;
   result.config = config;

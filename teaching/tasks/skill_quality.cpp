@@ -5,6 +5,7 @@
 #include <map>
 
 #include "engine/core/error.hpp"
+#include "engine/core/task_kind.hpp"
 #include "teaching/skills/skill_usage.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/writing_skill_places.hpp"
@@ -172,7 +173,7 @@ Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentati
     out["boundaries"]["tolerance"] = "+-5% of the word's length in steps";
     out["symbols"] = to_json(writing_symbol_purity(segmentations, data.demos));
   }
-  if (data.task == "parking") out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
+  if (task_kind_of(data.task) == TaskKind::parking) out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
   return out;
 }
 

@@ -6,7 +6,7 @@ namespace sc {
 
 const TaskKit& TaskKitCache::kit(const std::string& task, GoalRegion region) {
   // Writing has no lots: one kit, whatever region is asked for.
-  if (task != "parking") region = GoalRegion::WholeLot;
+  if (parse_task_kind(task, "task") == TaskKind::writing) region = GoalRegion::WholeLot;
   std::unique_ptr<TaskKit>& slot = kits_[{task, region}];
   if (!slot) slot = make_task_kit(task, {}, region);
   return *slot;

@@ -15,9 +15,10 @@ struct ChosenExtractor {
   std::string notice;  // why the time heuristic is used; empty for the trained model
 };
 
-ChosenExtractor choose_skill_extractor(const std::string& task, const std::filesystem::path& model) {
+ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::path& model) {
+  const std::string task(to_string(kind));
   if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), ""};
-  const int slices = task == "parking" ? kParkingTimeSlices : kWritingTimeSlices;
+  const int slices = kind == TaskKind::parking ? kParkingTimeSlices : kWritingTimeSlices;
   const std::string relative = "assets/models/" + task + ".pt";
   const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
   // The missing case names the asset relative to the asset folder, so the notice (shown on screen and in
@@ -33,14 +34,17 @@ ChosenExtractor choose_skill_extractor(const std::string& task, const std::files
 
 }  // namespace
 
-std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model,
-                                       GoalRegion region) {
-  if (task != "parking" && task != "writing") throw InputError("task", "'" + task + "' is not parking or writing");
+std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {
   ChosenExtractor chosen = choose_skill_extractor(task, model);
-  if (task == "parking")
+  if (task == TaskKind::parking)
     return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice,
                                         ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}});
   return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
+}
+
+std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model,
+                                       GoalRegion region) {
+  return make_task_kit(parse_task_kind(task, "task"), model, region);
 }
 
 }  // namespace sc

@@ -6,15 +6,19 @@
 #include <memory>
 #include <string>
 
+#include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_scenario.hpp"
 #include "teaching/sessions/task_kit.hpp"
 
 namespace sc {
 
-// task: "parking" or "writing" (InputError otherwise, or when the task's data is missing). A non-empty
+// InputError when the task's data is missing. A non-empty
 // `model` must load (the user asked for it: its InputError propagates); an empty one means the shipped model.
 // Parking draws its pool and fresh scenarios in `region` (the shipped pool of that region); writing has no
 // regions and ignores it.
+std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model = {},
+                                       GoalRegion region = GoalRegion::WholeLot);
+// The same for a task named in text (a stored session's task column): InputError for anything else.
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model = {},
                                        GoalRegion region = GoalRegion::WholeLot);
 

@@ -31,7 +31,11 @@ TEST(ReplayCommand, MalformedFileAndOtherTasksAreOneLineErrors) {
   EXPECT_EQ(r.output, "skillcoach: error: " + data("bad_action.json") + ": $.actions[1]: expected an array of 2 numbers [u0, u1]\n");
   r = sc::test::run_skillcoach("replay --task cooking " + data("expert_trial.json"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.output, "skillcoach: error: --task: replay supports \"parking\" only for now (got \"cooking\")\n");
+  EXPECT_NE(r.output.find("--task: cooking not in {parking,writing}"), std::string::npos) << r.output;
+  r = sc::test::run_skillcoach("replay --task writing " + data("expert_trial.json"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.output, "skillcoach: error: --task: replay simulates parking trials only (a writing trial has nothing to "
+                      "re-simulate)\n");
 }
 
 }  // namespace

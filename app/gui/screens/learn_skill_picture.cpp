@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "engine/parking_view/parking_path.hpp"
 #include "engine/writing/writing_trial.hpp"
@@ -16,9 +17,11 @@ struct Polyline {
   std::size_t first = 0, last = 0;
 };
 
+TaskKind task_of(const Json& trial) { return parse_task_kind(trial.value("task", ""), "trial: $.task"); }
+
 std::vector<ImVec2> trial_points(const Json& trial) {
   std::vector<ImVec2> points;
-  if (trial.value("task", "") == "parking") {
+  if (task_of(trial) == TaskKind::parking) {
     const ParkingPath path = simulate_parking_path(parse_parking_trial(trial, "trial"));
     for (const auto& s : path.samples) points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
   } else {
@@ -51,9 +54,8 @@ struct BoxMap {
 
 Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
   Polyline out;
-  const std::string task = demo.trial.value("task", "");
   out.points = trial_points(demo.trial);
-  if (task == "parking") {
+  if (task_of(demo.trial) == TaskKind::parking) {
     const std::size_t per_step = static_cast<std::size_t>(parking::kSubstepsPerAction);
     out.first = static_cast<std::size_t>(segment.begin) * per_step;
     out.last = static_cast<std::size_t>(segment.end) * per_step;
