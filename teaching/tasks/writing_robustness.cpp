@@ -19,6 +19,11 @@ RealisticHand hand(double wobble_px, double affine, std::vector<int> drawers, do
   return h;
 }
 
+RealisticHand without_mouse(RealisticHand h) {
+  h.mouse = false;
+  return h;
+}
+
 StepSequence trace_steps(const writing::TimedTrace& trace, const std::string& word) {
   const writing::TimedTrace infilled = writing::infill_trace(trace);
   return writing_step_sequence(writing::trace_step_data(infilled.points, writing::AlphabetKind::Classic, word));
@@ -38,7 +43,10 @@ std::vector<WritingCondition> writing_robustness_conditions() {
           {"wobble 5 px", hand(5.0, 0.0, {}, 0.0)},
           {"wobble 10 px", hand(10.0, 0.0, {}, 0.0)},
           {"unseen drawers 11-15", hand(0.0, 0.0, unseen_drawers(), 0.0)},
-          {"realistic: unseen drawers, 5 px, affine 0.1, hesitations", hand(5.0, 0.1, unseen_drawers(), 0.3)}};
+          {"realistic: unseen drawers, 5 px, affine 0.1, hesitations", hand(5.0, 0.1, unseen_drawers(), 0.3)},
+          {"wobble 5 px, no mouse sampling", without_mouse(hand(5.0, 0.0, {}, 0.0))},
+          {"affine 0.1 per letter, no mouse sampling", without_mouse(hand(0.0, 0.1, {}, 0.0))},
+          {"training drawers 1-10, no mouse sampling", without_mouse(hand(0.0, 0.0, training_drawers(), 0.0))}};
 }
 
 int majority_skill(const Segmentation& segmentation, int begin, int end) {

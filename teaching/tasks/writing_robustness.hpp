@@ -22,7 +22,8 @@ struct WritingCondition {
 };
 
 // expert gold; mouse sampling; wobble 5 px; wobble 10 px; unseen drawers (11..15, with mouse sampling);
-// a realistic mix (unseen drawers, 5 px wobble, affine 0.1, mouse sampling and hesitations).
+// a realistic mix (unseen drawers, 5 px wobble, affine 0.1, mouse sampling and hesitations); then, to tell
+// the causes apart, single perturbations without mouse sampling: 5 px wobble, affine 0.1, training drawers.
 std::vector<WritingCondition> writing_robustness_conditions();
 
 struct WritingRobustnessRow {
