@@ -141,6 +141,7 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
     ++report.noise_learners;
     report.noise_without_confident_target += lowest >= kConfidentTargetExpertise;
     report.noise_lowest_expertise.push_back(lowest);
+    if (!e.targets.empty()) ++report.noise_top_targets[e.targets.front()];
   }
   return report;
 }
@@ -165,7 +166,12 @@ std::string planted_weakness_table(const PlantedWeaknessReport& report) {
                 report.noise_learners ? 100.0 * report.noise_without_confident_target / report.noise_learners : 0.0,
                 lowest.empty() ? 0.0 : lowest.front(), lowest.empty() ? 0.0 : lowest[lowest.size() / 2]);
   out += line;
-  return out;
+  out += "noise-only learners' first target (skill: learners):";
+  for (const auto& [skill, n] : report.noise_top_targets) {
+    std::snprintf(line, sizeof line, " %d: %d", skill, n);
+    out += line;
+  }
+  return out + "\n";
 }
 
 }  // namespace sc

@@ -12,6 +12,7 @@
 // A noise-only learner has the background hand only. All seeded: learner i of letter L uses
 // Rng(seed).fork(1000 * L + i).
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,7 @@ struct PlantedWeaknessReport {
   int noise_learners = 0;
   int noise_without_confident_target = 0;  // no target with expertise < kConfidentTargetExpertise
   std::vector<double> noise_lowest_expertise;  // per noise-only learner: its weakest target's E
+  std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
 };
 
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
