@@ -1,8 +1,11 @@
-// skillcoach evaluate-skills --task T (--model FILE | --time-heuristic) [--count N] [--seed S]: segments freshly
+// skillcoach evaluate-skills --task T (--model FILE | --time-heuristic) [--count N] [--seed S]
+// [--robustness | --planted-weaknesses [--learners N]]: segments freshly
 // generated expert demonstrations (a seed other than the model's training seed) with the model, or with the
 // paper's Time Heuristic baseline as the yardstick, and prints the quality report
 // (teaching/tasks/skill_quality.hpp) as JSON: writing boundary precision/recall/F1 against the true character
 // boundaries, parking skill purity, per-skill usage, and (models only) the action reconstruction error.
+// For writing, --robustness prints the same model's figures on realistic learners (writing_robustness.hpp)
+// and --planted-weaknesses Alg. 2's recovery of a badly written letter (writing_planted_weakness.hpp), as tables.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -16,12 +19,17 @@
 #include "app/cli/command_registry.hpp"
 #include "engine/core/error.hpp"
 #include "engine/writing/step_data.hpp"
+#include "engine/writing/word_generator.hpp"
 #include "teaching/skills/compile_config.hpp"
+#include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+#include "teaching/tasks/writing_planted_weakness.hpp"
+#include "teaching/tasks/writing_robustness.hpp"
 
 namespace sc::cli {
 namespace {
@@ -33,6 +41,9 @@ struct EvaluateArgs {
   int count = 200;
   std::optional<unsigned long long> seed;
   bool details = false;
+  bool robustness = false;
+  bool planted = false;
+  int learners = 20;
 };
 
 // One entry per demonstration: what it is, its true boundaries (writing) and the predicted segments, so a
@@ -57,6 +68,41 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
   return {std::move(out), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
 }
 
+std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& args) {
+  if (args.time_heuristic) return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
+  return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, args.task));
+}
+
+// The robustness table (writing): the model (or the time heuristic) on words by realistic learners.
+int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
+  if (args.task != "writing") throw InputError("--robustness", "only for --task writing");
+  const std::shared_ptr<const SkillExtractor> extractor = robustness_extractor(args);
+  std::fprintf(stderr, "evaluate-skills: %d classic words (seed %llu) by realistic learners...\n", args.count,
+               static_cast<unsigned long long>(seed));
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<WritingRobustnessRow> rows = measure_writing_robustness(
+      *extractor, ClassicDrawerGlyphs::load(), writing::classic_words(args.count, seed), seed, writing_robustness_conditions());
+  std::printf("%s, %d words of seed %llu per condition (learner seeds Rng(%llu).fork(word)):\n\n%s",
+              args.time_heuristic ? "time heuristic" : args.model.c_str(), args.count,
+              static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed), robustness_table(rows).c_str());
+  std::fprintf(stderr, "evaluate-skills: %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return 0;
+}
+
+// Planted weaknesses under realistic input (writing): Alg. 2 on the app's pre-test written by planted learners.
+int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
+  if (args.task != "writing") throw InputError("--planted-weaknesses", "only for --task writing");
+  const WritingKit kit(robustness_extractor(args), "");
+  std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
+               args.learners, args.learners, static_cast<unsigned long long>(seed));
+  const auto t0 = std::chrono::steady_clock::now();
+  const PlantedWeaknessReport report = measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed);
+  std::printf("%s, %d learners per letter, seed %llu:\n%s", args.time_heuristic ? "time heuristic" : args.model.c_str(),
+              args.learners, static_cast<unsigned long long>(seed), planted_weakness_table(report).c_str());
+  std::fprintf(stderr, "evaluate-skills: %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return 0;
+}
+
 int run(const EvaluateArgs& args) {
   if (args.model.empty() && !args.time_heuristic)
     throw InputError("evaluate-skills", "give a model (--model FILE) or --time-heuristic");
@@ -71,6 +117,8 @@ int run(const EvaluateArgs& args) {
     if (seed == model->config().seed)
       throw InputError("--seed", std::to_string(seed) + " is the seed the model was trained with; pick another");
   }
+  if (args.robustness) return print_robustness(args, seed);
+  if (args.planted) return print_planted_weaknesses(args, seed);
   std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
                args.task.c_str(), static_cast<unsigned long long>(seed));
   const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
@@ -106,6 +154,15 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
   sub.add_flag("--details", args->details,
                "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");
+  sub.add_flag("--robustness", args->robustness,
+               "Writing: print the robustness table instead (boundary F1 and letter->skill agreement on --count words "
+               "written by realistic learners: mouse sampling, wobble, unseen drawers; docs/skills.md \"Robustness\")");
+  auto* planted = sub.add_flag("--planted-weaknesses", args->planted,
+               "Writing: print the planted-weakness table instead (Alg. 2 on the app's pre-test written by learners who "
+               "write one letter badly and the rest with realistic noise; docs/skills.md \"Robustness\")");
+  sub.add_option("--learners", args->learners, "Learners per letter (and noise-only learners) for --planted-weaknesses")
+      ->capture_default_str()->check(CLI::Range(1, 1000));
+  planted->excludes(sub.get_option("--robustness"));
   return [args] { return run(*args); };
 }
 

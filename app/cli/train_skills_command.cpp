@@ -30,6 +30,7 @@ struct TrainArgs {
   unsigned long long seed = 0;
   std::vector<std::string> overrides;  // --set key=value
   bool fix_boundaries = false;         // diagnostic: boundaries fixed at the true symbol edges
+  int augment = 0;                     // writing: perturbed copies per word (0 = the expert's gold words only)
 };
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
@@ -77,8 +78,11 @@ int run(const TrainArgs& args) {
   if (args.iterations >= 0) config.iterations = args.iterations;
   config = with_overrides(config, args.overrides);
   std::fprintf(stderr, "%s: %s demonstrations...\n", args.task.c_str(), args.data.empty() ? "generating" : "reading");
-  const SkillDataSet data =
-      args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed) : read_task_demos(args.task, args.data);
+  if (args.augment > 0 && (args.task != "writing" || !args.data.empty()))
+    throw InputError("--augment", "only for generated writing words (--task writing without --data)");
+  const SkillDataSet data = args.augment > 0 ? generate_augmented_writing_demos(args.demos, args.augment, args.seed)
+                            : args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed)
+                                                : read_task_demos(args.task, args.data);
   const DataSplit split = split_demos(data, kValidFraction, args.seed);
   std::fprintf(stderr, "%s: %zu training and %zu validation trajectories (%s)\n", args.task.c_str(), split.train.size(),
                split.valid.size(), data.description.c_str());
@@ -90,6 +94,7 @@ int run(const TrainArgs& args) {
         throw InputError("--fix-boundaries", "demonstration " + demo.label + " has no known boundaries (only generated writing words have them)");
     trainer.fix_boundaries(split.train_boundaries, split.valid_boundaries);
   }
+  if (!split.train_warm_boundaries.empty()) trainer.warm_start_at(split.train_warm_boundaries);
   TrainingProgressBar bar(stderr);
   const CompileModel model = trainer.train(split.train, split.valid, [&](const TrainingProgress& p) { bar.update(p); });
   bar.finish();
@@ -128,6 +133,11 @@ CommandRunner setup(CLI::App& sub) {
                "Diagnostic (generated writing words): fix every boundary at the true symbol edges and train only the "
                "latents and the decoder, to measure the validation NLL CompILE's objective gives the letter "
                "segmentation; the model is not for segmenting");
+  sub.add_option("--augment", args->augment,
+                 "Writing: train on the generated words with letters by the paper's and drawers 1-10 plus this many "
+                 "perturbed copies of each (wobble, affine), which inherit the clean word's repetition boundaries for "
+                 "the warm start (docs/skills.md \"Robustness\")")
+      ->check(CLI::Range(0, 20));
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

@@ -76,12 +76,19 @@ class CompileTrainer {
   // objective gives a chosen segmentation (its validation NLL); it is not meant for segmenting.
   // train() throws InputError when the lists do not match the data.
   void fix_boundaries(std::vector<std::vector<int>> train_boundaries, std::vector<std::vector<int>> valid_boundaries);
+  // The warm start (config.warm_start_iterations > 0) fixes the boundaries here instead of where the training
+  // data stop repeating: for augmented copies of repeating data, which inherit their clean word's repetition
+  // boundaries (the perturbation keeps step indices). Entry i belongs to training trajectory i; same rules
+  // as fix_boundaries (train() throws InputError when they do not match the data).
+  void warm_start_at(std::vector<std::vector<int>> train_boundaries);
 
  private:
   CompileConfig config_;
   TrainingSummary summary_;
   std::vector<std::vector<int>> fixed_train_, fixed_valid_;
   bool fixed_ = false;
+  std::vector<std::vector<int>> warm_given_;
+  bool warm_given_set_ = false;
 };
 
 }  // namespace sc

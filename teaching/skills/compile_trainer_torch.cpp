@@ -41,6 +41,11 @@ void CompileTrainer::fix_boundaries(std::vector<std::vector<int>> train_boundari
   fixed_ = true;
 }
 
+void CompileTrainer::warm_start_at(std::vector<std::vector<int>> train_boundaries) {
+  warm_given_ = std::move(train_boundaries);
+  warm_given_set_ = true;
+}
+
 namespace {
 
 // Boundary positions in model steps (empty when boundaries are not fixed), one list per trajectory.
@@ -295,7 +300,10 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   if (config_.warm_start_iterations > 0 && !fixed_) {
     RepeatBoundaryConfig repeat;
     repeat.max_boundaries = std::max(0, config_.num_segments - 1);
-    const auto found = find_repeat_boundaries(train, repeat);
+    if (warm_given_set_ && warm_given_.size() != train.size())
+      throw InputError("warm-start boundaries", std::to_string(warm_given_.size()) + " lists for " +
+                                                    std::to_string(train.size()) + " training trajectories");
+    const auto found = warm_given_set_ ? warm_given_ : find_repeat_boundaries(train, repeat);
     warm = to_fixed_positions(found, train_steps, config_.num_segments, "warm-start boundaries of training trajectory");
     std::size_t total = 0;
     for (const auto& f : found) total += f.size();

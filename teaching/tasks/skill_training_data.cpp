@@ -12,8 +12,11 @@
 #include "engine/writing/word_generator.hpp"
 #include "engine/writing/writing_scenario.hpp"
 #include "engine/writing/writing_trial.hpp"
+#include "teaching/skills/compile_config.hpp"
+#include "teaching/skills/repeat_boundaries.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/writing_realistic_learner.hpp"
 #include "teaching/tasks/writing_steps.hpp"
 
 namespace sc {
@@ -28,7 +31,7 @@ std::vector<StepSequence> SkillDataSet::steps() const {
 SkillDataSet generate_parking_demos(int count, std::uint64_t seed) {
   if (count < 1) throw InputError("parking demonstrations", "count must be at least 1");
   const ParkingExpert expert;
-  SkillDataSet out{"parking", "", {}};
+  SkillDataSet out{"parking", "", {}, {}};
   for (int i = 0; i < count; ++i) {
     const ParkingScenario scenario = parking_pool_scenario(seed, i);
     const ParkingPlan plan = expert.plan(scenario);
@@ -47,7 +50,7 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   if (count < 1) throw InputError("writing demonstrations", "count must be at least 1");
   const std::vector<std::string> words = writing::classic_words(count, seed);
   const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
-  SkillDataSet out{"writing", "", {}};
+  SkillDataSet out{"writing", "", {}, {}};
   for (int i = 0; i < count; ++i) {
     const writing::WordTrajectory gold = writing::build_word_trajectory(glyphs, words[static_cast<std::size_t>(i)]);
     const writing::WritingStepData data = writing::expert_step_data(gold);
@@ -58,6 +61,47 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   }
   out.description = std::to_string(count) + " gold trajectories of classic words from the reference's generator (seed " +
                     std::to_string(seed) + ")";
+  return out;
+}
+
+SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed) {
+  if (count < 1 || copies < 0) throw InputError("writing demonstrations", "count must be at least 1, copies at least 0");
+  const std::vector<std::string> words = writing::classic_words(count, seed);
+  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
+  std::vector<int> drawers_pool = training_drawers();
+  drawers_pool.push_back(0);  // the paper's drawer
+  const Rng root = Rng(seed).fork(0xa0a0u);
+  std::vector<WrittenWord> clean;
+  std::vector<StepSequence> clean_steps;
+  for (int i = 0; i < count; ++i) {
+    Rng rng = root.fork(static_cast<std::uint64_t>(i));
+    const std::string& word = words[static_cast<std::size_t>(i)];
+    std::vector<int> drawers;
+    for (std::size_t k = 0; k < word.size(); ++k) drawers.push_back(drawers_pool[rng.below(drawers_pool.size())]);
+    clean.push_back(written_word(glyphs, word, drawers));
+    clean_steps.push_back(writing_step_sequence(writing::trace_step_data(clean.back().points, writing::AlphabetKind::Classic, word)));
+  }
+  RepeatBoundaryConfig repeat;
+  repeat.max_boundaries = CompileConfig::writing_defaults().num_segments - 1;
+  const std::vector<std::vector<int>> warm = find_repeat_boundaries(clean_steps, repeat);
+  SkillDataSet out{"writing", "", {}, {}};
+  for (int i = 0; i < count; ++i) {
+    const std::size_t u = static_cast<std::size_t>(i);
+    out.demos.push_back({words[u], clean_steps[u], clean[u].interior_boundaries()});
+    out.warm_boundaries.push_back(warm[u]);
+    for (int c = 0; c < copies; ++c) {
+      Rng rng = root.fork(static_cast<std::uint64_t>(i)).fork(1u + static_cast<std::uint64_t>(c));
+      const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
+      const WrittenWord copy = perturbed(clean[u], {wobble, affine}, rng);
+      out.demos.push_back({words[u] + " (copy " + std::to_string(c + 1) + ")",
+                           writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
+                           copy.interior_boundaries()});
+      out.warm_boundaries.push_back(warm[u]);
+    }
+  }
+  out.description = std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
+                    "), letters by the paper's and Omniglot drawers 1-10, plus " + std::to_string(copies) +
+                    " perturbed copies each (wobble <= 12 px, affine <= 0.12) with the clean words' repetition boundaries";
   return out;
 }
 
@@ -88,7 +132,7 @@ SkillDataSet read_task_demos(const std::string& task, const std::filesystem::pat
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (files.empty()) throw InputError(dir.string(), "contains no .json trial files");
-  SkillDataSet out{task, std::to_string(files.size()) + " " + task + " trial files from " + dir.string(), {}};
+  SkillDataSet out{task, std::to_string(files.size()) + " " + task + " trial files from " + dir.string(), {}, {}};
   for (const auto& file : files) {
     StepSequence steps = trial_steps(task, file);
     if (steps.length() == 0) throw InputError(file.string(), "trial has no steps");
@@ -111,6 +155,7 @@ DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint
     const SkillDemo& demo = data.demos[order[i]];
     (i < held ? out.valid : out.train).push_back(demo.steps);
     (i < held ? out.valid_boundaries : out.train_boundaries).push_back(demo.true_boundaries);
+    if (i >= held && !data.warm_boundaries.empty()) out.train_warm_boundaries.push_back(data.warm_boundaries[order[i]]);
   }
   return out;
 }

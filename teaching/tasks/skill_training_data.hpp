@@ -22,6 +22,8 @@ struct SkillDataSet {
   std::string task;
   std::string description;  // one line for the model sidecar, e.g. "1000 expert plans on random ..."
   std::vector<SkillDemo> demos;
+  // Empty, or per demo the boundaries the warm start fixes (CompileTrainer::warm_start_at): augmented data.
+  std::vector<std::vector<int>> warm_boundaries;
   std::vector<StepSequence> steps() const;
 };
 
@@ -30,6 +32,13 @@ struct SkillDataSet {
 SkillDataSet generate_parking_demos(int count, std::uint64_t seed);
 // `count` classic words from the reference's generator (Rng(seed)), each the expert's gold trajectory.
 SkillDataSet generate_writing_demos(int count, std::uint64_t seed);
+// Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn from the paper's
+// and the training drawers (training_drawers(): the unseen ones are never used), then `copies` perturbed
+// copies of each (writing_realistic_learner.hpp: smooth wobble up to 12 px, per-letter affine up to 0.12;
+// no resampling, so step indices are kept). warm_boundaries: the clean words' repetition boundaries
+// (find_repeat_boundaries over the clean words, K - 1 = 7 at most), inherited by their copies; the true
+// boundaries are only kept as true_boundaries (for reports), never used to train.
+SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed);
 // generate_parking_demos or generate_writing_demos by task name (InputError for another task).
 SkillDataSet generate_task_demos(const std::string& task, int count, std::uint64_t seed);
 
@@ -42,6 +51,7 @@ struct DataSplit {
   std::vector<StepSequence> valid;
   std::vector<std::vector<int>> train_boundaries;  // the demos' true_boundaries, parallel to train / valid
   std::vector<std::vector<int>> valid_boundaries;
+  std::vector<std::vector<int>> train_warm_boundaries;  // the data's warm_boundaries of train (when it has them)
 };
 // Holds out round(valid_fraction * n) demos (at least 1 when n >= 2) chosen with `seed`.
 DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint64_t seed);

@@ -26,6 +26,23 @@ TEST(SkillTrainingData, WritingWordsCarryTheirCharacterBoundaries) {
   EXPECT_EQ(generate_writing_demos(5, 0).demos[3].label, data.demos[3].label);  // deterministic
 }
 
+TEST(SkillTrainingData, AugmentedCopiesKeepTheCleanWordsStepsAndWarmBoundaries) {
+  const SkillDataSet data = generate_augmented_writing_demos(6, 1, 2);
+  ASSERT_EQ(data.demos.size(), 12u);
+  ASSERT_EQ(data.warm_boundaries.size(), 12u);
+  for (std::size_t i = 0; i < 12; i += 2) {
+    const SkillDemo& clean = data.demos[i];
+    const SkillDemo& copy = data.demos[i + 1];
+    EXPECT_EQ(copy.steps.length(), clean.steps.length()) << clean.label;  // the perturbation keeps step indices
+    EXPECT_NE(copy.steps.actions, clean.steps.actions) << clean.label;
+    EXPECT_EQ(copy.true_boundaries, clean.true_boundaries);
+    EXPECT_EQ(data.warm_boundaries[i + 1], data.warm_boundaries[i]);  // inherited, not found anew
+  }
+  // Split: the training lists of warm boundaries follow the training demos.
+  const DataSplit split = split_demos(data, 0.25, 0);
+  EXPECT_EQ(split.train_warm_boundaries.size(), split.train.size());
+}
+
 TEST(SkillTrainingData, ParkingDemosAreParkedExpertPlans) {
   const SkillDataSet data = generate_parking_demos(3, 11);
   ASSERT_FALSE(data.demos.empty());
@@ -46,7 +63,7 @@ TEST(SkillTrainingData, SplitHoldsOutATenthChosenByTheSeed) {
   for (const auto& s : a.valid) lengths_a.insert(s.actions.size());
   for (const auto& s : c.valid) lengths_c.insert(s.actions.size());
   EXPECT_NE(lengths_a, lengths_c);  // another seed holds out other words
-  EXPECT_EQ(split_demos(SkillDataSet{"writing", "", {data.demos[0], data.demos[1]}}, 0.1, 0).valid.size(), 1u);
+  EXPECT_EQ(split_demos(SkillDataSet{"writing", "", {data.demos[0], data.demos[1]}, {}}, 0.1, 0).valid.size(), 1u);
 }
 
 TEST(SkillTrainingData, FolderWithoutTrialsOrWithAForeignTrialIsRefused) {

@@ -1,0 +1,66 @@
+#pragma once
+// Planted-weakness recovery under realistic input (evaluate-skills --planted-weaknesses): does Alg. 2
+// (diagnose_trials, as the app runs it) find the letter a learner writes badly when everything else is
+// written with a realistic hand rather than the expert's exact gold?
+//
+// A planted learner writes the app's pre-test words (Alg. 1's 5 diverse words of the kit's pool) with a
+// realistic background hand (paper's drawers, smooth wobble 2..6 px, per-letter affine 0.08, mouse
+// sampling, hesitations) and one letter badly, its fault chosen by the learner's index:
+//   distorted     the letter's steps squashed or stretched (y scale 0.4..0.6 or 1.6..2), sheared 0.5..0.8;
+//   other drawer  the letter in another drawer's shape (any of the 14 other Omniglot drawers);
+//   straight line a straight line from where the letter starts to where it ends (same number of points).
+// A noise-only learner has the background hand only. All seeded: learner i of letter L uses
+// Rng(seed).fork(1000 * L + i).
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/writing/writing_trial.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+#include "teaching/tasks/writing_realistic_learner.hpp"
+
+namespace sc {
+
+enum class LetterFault { None, Distorted, OtherDrawer, StraightLine };
+std::string to_string(LetterFault fault);
+
+struct PlantedLearner {
+  char letter = 0;                     // 0 with LetterFault::None
+  LetterFault fault = LetterFault::None;
+  std::uint64_t seed = 0;
+};
+
+// The learner's trial for `word` (word_index keeps the trials of one learner independent).
+writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std::string& word,
+                                    const PlantedLearner& learner, int word_index);
+
+// Expertise below this (Alg. 2's E_m, <= 0) counts as a confident target. Why this value: one missing
+// skill in one trial with reward -0.3 (a mediocre pre-test word) at position j = 2 costs 0.15; a noise-only
+// learner should not lose more than that on any skill.
+inline constexpr double kConfidentTargetExpertise = -0.15;
+
+struct PlantedLetterRow {
+  char letter = 0;
+  int skill = -1;                      // the skill with the most expert steps in the letter
+  int learners = 0;
+  int top_target = 0;                  // learners whose first target is `skill`
+  std::vector<int> by_fault_learners;  // per fault (Distorted, OtherDrawer, StraightLine)
+  std::vector<int> by_fault_top;
+};
+
+struct PlantedWeaknessReport {
+  std::vector<std::string> pretest_words;
+  std::vector<PlantedLetterRow> letters;
+  int noise_learners = 0;
+  int noise_without_confident_target = 0;  // no target with expertise < kConfidentTargetExpertise
+  std::vector<double> noise_lowest_expertise;  // per noise-only learner: its weakest target's E
+  std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
+};
+
+PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
+                                                 int learners_per_letter, std::uint64_t seed);
+
+std::string planted_weakness_table(const PlantedWeaknessReport& report);
+
+}  // namespace sc

@@ -1,0 +1,40 @@
+#include "teaching/tasks/writing_planted_weakness.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace sc {
+namespace {
+
+const ClassicDrawerGlyphs& glyphs() {
+  static const ClassicDrawerGlyphs g = ClassicDrawerGlyphs::load();
+  return g;
+}
+
+// The same learner (seed) with and without its fault: the trace is identical until the faulty letter.
+std::size_t common_prefix(const writing::WritingTrial& a, const writing::WritingTrial& b) {
+  std::size_t n = 0;
+  while (n < std::min(a.points.size(), b.points.size()) && a.points[n] == b.points[n]) ++n;
+  return n;
+}
+
+TEST(WritingPlantedWeakness, EachFaultChangesItsLetterOnly) {
+  const std::string word = "ct-b^e";  // 'b' starts after c, t and '-'
+  const writing::WritingTrial plain = planted_trial(glyphs(), word, {'b', LetterFault::None, 4}, 0);
+  EXPECT_EQ(plain.points, planted_trial(glyphs(), word, {'b', LetterFault::None, 4}, 0).points);  // seeded
+  EXPECT_EQ(plain.scenario.word, word);
+  for (LetterFault fault : {LetterFault::Distorted, LetterFault::OtherDrawer, LetterFault::StraightLine}) {
+    const writing::WritingTrial bad = planted_trial(glyphs(), word, {'b', fault, 4}, 0);
+    const std::size_t same = common_prefix(plain, bad);
+    EXPECT_LT(same, bad.points.size()) << to_string(fault);
+    // c, t and '-' come before 'b': about half the word's ink, so well over a third of the points agree.
+    EXPECT_GT(same, plain.points.size() / 3) << to_string(fault);
+  }
+  // A letter the word does not contain leaves the trace as it is.
+  EXPECT_EQ(planted_trial(glyphs(), word, {'a', LetterFault::StraightLine, 4}, 0).points,
+            planted_trial(glyphs(), word, {'a', LetterFault::None, 4}, 0).points);
+}
+
+}  // namespace
+}  // namespace sc
