@@ -5,6 +5,7 @@
 // learner gets no skill below the expertise threshold, for Alg. 2 and for quality-aware expertise.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -25,7 +26,28 @@ struct EvaluateDiagnosisArgs {
   int learners = 20;
   int pretest = 5;  // the app's pre-test (SessionSettings::pretest_count)
   unsigned long long seed = 2;
+  bool details = false;
 };
+
+// Every learner's first targets (deficit skills starred) for one deficit and mode, to see what goes wrong.
+void print_details(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
+  for (PlantedDeficit d : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
+                           PlantedDeficit::LateBraking})
+    for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
+      const std::vector<int> spoiled = deficit_skills(d, kit.skill_motions());
+      std::printf("%s, %s:\n", deficit_name(d).c_str(), mode == ExpertiseMode::Alg2 ? "Alg. 2" : "quality-aware");
+      for (int i = 0; i < args.learners; ++i) {
+        const LearnerOutcome o = diagnose_planted_learner(kit, pretest, d, mode, args.seed, i);
+        std::printf("  learner %2d (%s): weakest E/trial %7.3f, targets", i,
+                    device_name(static_cast<DriveDevice>(i % 3)).c_str(), o.weakest_per_trial);
+        for (std::size_t k = 0; k < o.targets.size() && k < 5; ++k) {
+          const bool hit = std::find(spoiled.begin(), spoiled.end(), o.targets[k]) != spoiled.end();
+          std::printf(" %d%s", o.targets[k], hit ? "*" : "");
+        }
+        std::printf("\n");
+      }
+    }
+}
 
 const char* mode_name(ExpertiseMode mode) { return mode == ExpertiseMode::Alg2 ? "Alg. 2" : "quality-aware"; }
 
@@ -48,6 +70,16 @@ int run(const EvaluateDiagnosisArgs& args) {
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(), skill_list(deficit_skills(d, kit->skill_motions())).c_str());
   std::printf("quiet thresholds (expertise per pre-test trial): Alg. 2 %.3f, quality-aware %.3f\n\n",
               kQuietExpertiseAlg2, kQuietExpertiseQualityAware);
+  if (args.details) {
+    for (int m = 0; m < kit->extractor().num_skills(); ++m) {
+      const ParkingSkillMotion& s = kit->skill_motions()[static_cast<std::size_t>(m)];
+      std::printf("  skill %2d: %-64s %4d steps, speed %5.2f m/s, reversing %3.0f %%, sharp %3.0f %%, braking %3.0f %%\n", m,
+                  kit->describe_skill(m).c_str(), s.steps, s.mean_speed, 100 * s.reverse_fraction, 100 * s.sharp_fraction,
+                  100 * s.braking_fraction);
+    }
+    print_details(*kit, pretest, args);
+    return 0;
+  }
   std::printf("| planted deficit | expertise | deficit skills fill the top targets | first target a deficit skill | no skill below the threshold |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const RecoveryRow& r : planted_deficit_table(*kit, pretest, args.learners, args.seed)) {
@@ -67,6 +99,7 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--learners", args->learners, "Learners per deficit and mode")->capture_default_str()->check(CLI::Range(1, 1000));
   sub.add_option("--pretest", args->pretest, "Pre-test drives (diverse pool scenarios)")->capture_default_str()->check(CLI::Range(1, 100));
   sub.add_option("--seed", args->seed, "Seed of the learners (1 was used to choose the thresholds)")->capture_default_str();
+  sub.add_flag("--details", args->details, "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
   return [args] { return run(*args); };
 }
 

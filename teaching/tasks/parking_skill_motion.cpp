@@ -59,6 +59,15 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
   return out;
 }
 
+bool motion_reverses(const ParkingSkillMotion& m) {
+  return m.steps > 0 && (m.mean_speed <= -kMovingSpeed || (m.mean_speed < kMovingSpeed && m.mean_acceleration < 0.0));
+}
+
+bool motion_brakes(const ParkingSkillMotion& m) {
+  const bool moving = std::abs(m.mean_speed) >= kMovingSpeed;
+  return m.steps > 0 && moving && m.mean_acceleration * m.mean_speed < 0.0 && std::abs(m.mean_acceleration) >= kBraking;
+}
+
 std::string describe_parking_motion(const ParkingSkillMotion& m) {
   if (m.steps == 0) return "unused skill";
   std::string words;
@@ -75,9 +84,7 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
   else
     words += " straight";
   // Acceleration against the direction of motion slows the car down.
-  const bool moving = std::abs(m.mean_speed) >= kMovingSpeed;
-  if (moving && m.mean_acceleration * m.mean_speed < 0.0 && std::abs(m.mean_acceleration) >= kBraking)
-    words += ", braking";
+  if (motion_brakes(m)) words += ", braking";
   return words;
 }
 

@@ -26,6 +26,12 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
                                                       const std::vector<Segmentation>& segmentations,
                                                       int num_skills);
 
+// What the words say (the rules describe_parking_motion uses): the skill reverses ("reversing", "starting to
+// reverse": mean speed <= -0.5 m/s, or nearly stopped with mean u0 < 0) / brakes (mean u0 against the
+// motion, |mean u0| >= 0.15, while moving).
+bool motion_reverses(const ParkingSkillMotion& motion);
+bool motion_brakes(const ParkingSkillMotion& motion);
+
 // "reversing while steering left, braking", "driving forward straight", "unused skill" ...
 std::string describe_parking_motion(const ParkingSkillMotion& motion);
 // The words of every skill, distinct among used skills, so a learner never sees two different skills under

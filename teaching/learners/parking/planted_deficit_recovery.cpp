@@ -14,12 +14,11 @@ std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<Parkin
   std::vector<int> out;
   for (std::size_t m = 0; m < motions.size(); ++m) {
     const ParkingSkillMotion& s = motions[m];
-    if (s.steps == 0) continue;
-    const double share = deficit == PlantedDeficit::NeverReversing ? s.reverse_fraction
-                         : deficit == PlantedDeficit::WeakSteering ? s.sharp_fraction
-                         : deficit == PlantedDeficit::LateBraking  ? s.braking_fraction
-                                                                   : 0.0;
-    if (share >= 0.5) out.push_back(static_cast<int>(m));
+    const bool spoiled = deficit == PlantedDeficit::NeverReversing ? motion_reverses(s)
+                         : deficit == PlantedDeficit::WeakSteering ? s.sharp_fraction >= 0.5
+                         : deficit == PlantedDeficit::LateBraking  ? motion_brakes(s)
+                                                                   : false;
+    if (spoiled) out.push_back(static_cast<int>(m));
   }
   return out;
 }
@@ -47,7 +46,7 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
   const std::vector<int> spoiled = deficit_skills(deficit, kit.skill_motions());
   auto is_spoiled = [&](int m) { return std::find(spoiled.begin(), spoiled.end(), m) != spoiled.end(); };
   out.deficit_skills_seen = static_cast<int>(std::count_if(d.expertise.ranking.begin(), d.expertise.ranking.end(), is_spoiled));
-  const int k = std::min<int>(out.deficit_skills_seen, static_cast<int>(out.targets.size()));
+  const int k = std::min({kTopTargets, out.deficit_skills_seen, static_cast<int>(out.targets.size())});
   out.recovered = k > 0 && std::all_of(out.targets.begin(), out.targets.begin() + k, is_spoiled);
   return out;
 }

@@ -6,10 +6,11 @@
 // novice profile drawn from Rng(S).fork(i) (sample_novice_profile), plus the deficit under test. Its
 // pre-test is the kit's `pretest` expert drives, each driven as the profile drives it (Rng(S).fork(i)
 // .fork(1 + k) for drive k), then diagnosed with diagnose_trials in the given mode.
-//  * A deficit's skills are the used skills whose expert steps mostly (>= 50 %) show what the deficit
-//    spoils: reversing (never reversing), steering beyond half lock (weak steering), braking (late braking).
-//  * Recovered: the first K targets are all deficit skills, K = min(N_target, deficit skills the pre-test's
-//    expert drives use). A pre-test without any deficit skill cannot show the deficit and counts as missed.
+//  * A deficit's skills are the used skills it spoils, as their words tell the learner: the "reversing"
+//    skills (never reversing), the "braking" skills (late braking) - motion_reverses / motion_brakes - and
+//    the skills steering beyond half lock on most (>= 50 %) of their expert steps (weak steering).
+//  * Recovered: the first K targets are all deficit skills, K = min(kTopTargets, N_target, deficit skills
+//    the pre-test's expert drives use). A pre-test without any deficit skill cannot show the deficit and counts as missed.
 //  * Noise-only learners: quiet when no skill's expertise per pre-test trial (E_m / trials) lies below the
 //    mode's threshold (kQuietExpertise*).
 #include <cstdint>
@@ -23,6 +24,8 @@ namespace sc {
 
 // Expertise per pre-test trial below which a skill counts as weak, per mode. Chosen on the noise-only and
 // planted learners of seed 1 (docs/skills.md, "Robustness on realistic learners"); reported at other seeds.
+inline constexpr int kTopTargets = 3;  // the "top 3 targets" (parking's N_target is larger)
+
 inline constexpr double kQuietExpertiseAlg2 = -0.05;
 inline constexpr double kQuietExpertiseQualityAware = -0.1;
 double quiet_expertise_threshold(ExpertiseMode mode);
@@ -46,7 +49,7 @@ struct RecoveryRow {
   PlantedDeficit deficit = PlantedDeficit::None;
   ExpertiseMode mode = ExpertiseMode::Alg2;
   int learners = 0;
-  int recovered = 0;  // planted deficits: first K targets all deficit skills
+  int recovered = 0;  // planted deficits: the first K (<= kTopTargets) targets all deficit skills
   int top1 = 0;       // the first target is a deficit skill
   int quiet = 0;      // no skill below the threshold (the share that should be high for None only)
 };
