@@ -2,6 +2,7 @@
 // `skillcoach evaluate-diagnosis --task parking`, docs/skills.md). A handful of learners keeps this cheap.
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -52,24 +53,27 @@ const Setup& setup() {
 constexpr std::uint64_t kSeed = 3;
 constexpr int kLearners = 6;
 
-TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersGetReversingTargetsWithQualityAwareExpertise) {
+// What holds at every seed measured (docs/skills.md): the first target of a noisy learner who never
+// reverses is a reversing skill, and such learners look weaker than noise-only ones. (Filling all of the
+// top 3 targets and keeping every noise-only learner above the threshold do not hold; see the docs.)
+TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersAreFirstDrilledOnReversingAndWeakerThanNoiseOnlyOnes) {
   ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
-  int recovered = 0;
-  for (int i = 0; i < kLearners; ++i)
-    recovered += diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::NeverReversing,
-                                          ExpertiseMode::QualityAware, kSeed, i)
-                     .recovered;
-  EXPECT_GE(recovered, kLearners - 1);
-}
-
-TEST(PlantedDeficitRecovery, NoiseOnlyLearnersStayAboveTheThreshold) {
-  ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
-  int quiet = 0;
-  for (int i = 0; i < kLearners; ++i)
-    quiet += diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, ExpertiseMode::QualityAware,
-                                      kSeed, i)
-                 .quiet;
-  EXPECT_GE(quiet, kLearners - 1);
+  for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
+    const std::vector<int> reversing = deficit_skills(PlantedDeficit::NeverReversing, setup().kit->skill_motions());
+    int first_reverses = 0;
+    double planted = 0.0, noise_only = 0.0;
+    for (int i = 0; i < kLearners; ++i) {
+      const LearnerOutcome o =
+          diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::NeverReversing, mode, kSeed, i);
+      ASSERT_FALSE(o.targets.empty());
+      first_reverses += std::find(reversing.begin(), reversing.end(), o.targets.front()) != reversing.end();
+      planted += o.weakest_per_trial;
+      noise_only +=
+          diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, mode, kSeed, i).weakest_per_trial;
+    }
+    EXPECT_GE(first_reverses, kLearners - 1) << "mode " << static_cast<int>(mode);
+    EXPECT_LT(planted, noise_only) << "mode " << static_cast<int>(mode);
+  }
 }
 
 }  // namespace
