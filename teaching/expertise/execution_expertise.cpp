@@ -40,14 +40,22 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
               static_cast<int>(k + 1), delta, e.begin, e.end, et.segments[k].learner_begin, et.segments[k].learner_end};
     }
   }
-  best.delta = std::max(best.delta, 0.0);
+  if (best.delta <= 0.0) {
+    best.delta = 0.0;
+    best.reason = TargetReason::NoMistake;
+  }
   return best;
 }
 
 }  // namespace
 
 const char* target_reason_words(TargetReason reason) {
-  return reason == TargetReason::Missing ? "missing" : "done with a large error here";
+  switch (reason) {
+    case TargetReason::Missing: return "missing";
+    case TargetReason::LargeError: return "done with a large error here";
+    case TargetReason::NoMistake: return "no mistake seen";
+  }
+  return "missing";
 }
 
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,

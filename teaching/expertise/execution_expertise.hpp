@@ -36,8 +36,11 @@ struct ExecutionTrial {
   std::vector<SegmentExecution> segments;  // parallel to trial.expert.segments
 };
 
-enum class TargetReason { Missing, LargeError };
-const char* target_reason_words(TargetReason reason);  // "missing", "done with a large error here"
+// NoMistake: a target without any penalty (fewer weak skills than targets: Alg. 3 still drills the skills
+// the expert relies on); its place is the skill's first expert segment.
+enum class TargetReason { Missing, LargeError, NoMistake };
+// "missing", "done with a large error here", "no mistake seen"
+const char* target_reason_words(TargetReason reason);
 
 struct TargetWhy {
   int skill = 0;

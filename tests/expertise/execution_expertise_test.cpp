@@ -26,6 +26,9 @@ TEST(ExecutionExpertise, Alg2ModeIsAlg2Exactly) {
   EXPECT_EQ(e.why[0].skill, 2);
   EXPECT_EQ(e.why[0].reason, TargetReason::Missing);
   EXPECT_EQ(e.why[0].position, 3);
+  // Skill 0 and 1 were shown: Alg. 2 has no penalty for the second target.
+  EXPECT_EQ(e.why[1].reason, TargetReason::NoMistake);
+  EXPECT_EQ(e.why[1].delta, 0.0);
 }
 
 TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorOverItsPosition) {
