@@ -22,8 +22,9 @@
 
 namespace sc {
 
-// Expertise per pre-test trial below which a skill counts as weak, per mode. Chosen on the noise-only and
-// planted learners of seed 1 (docs/skills.md, "Robustness on realistic learners"); reported at other seeds.
+// Expertise per pre-test trial below which a skill counts as weak, per mode: set by hand before the first
+// run (seed 1) and not changed since; the table is reported at seed 2 (docs/skills.md, "Robustness on
+// realistic learners").
 inline constexpr int kTopTargets = 3;  // the issue's "top 3 targets" (parking's N_target is larger)
 
 inline constexpr double kQuietExpertiseAlg2 = -0.05;
