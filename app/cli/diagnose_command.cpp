@@ -34,6 +34,7 @@ struct DiagnoseArgs {
   std::string png_dir;
   std::string out;
   unsigned long long seed = 0;
+  std::string expertise = "alg2";
   std::vector<std::string> trials;
 };
 
@@ -91,7 +92,8 @@ int run(const DiagnoseArgs& args) {
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   Diagnosis diagnosis;
   try {
-    diagnosis = diagnose_trials(*kit, trials, args.seed);
+    diagnosis = diagnose_trials(*kit, trials, args.seed,
+                                args.expertise == "quality-aware" ? ExpertiseMode::QualityAware : ExpertiseMode::Alg2);
   } catch (const InputError& e) {
     // "trial 2: ..." -> name the file instead.
     const std::string message = e.what();
@@ -116,6 +118,11 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
   sub.add_option("--seed", args->seed, "Seed of the drills' random expert segments (default 0)");
+  sub.add_option("--expertise", args->expertise,
+                 "alg2: the paper's Alg. 2 (skills missing from the learner's trials); quality-aware: Alg. 2 plus "
+                 "how well each skill was done (docs/skills.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"alg2", "quality-aware"}));
   sub.add_option("--png", args->png_dir, "Directory to draw each drill's ghost path into (drill_N.png)");
   sub.add_option("--out", args->out, "Write the JSON here instead of standard output");
   sub.add_option("trials", args->trials, "Trial files of one learner (JSON)")->required();

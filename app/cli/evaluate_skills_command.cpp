@@ -1,11 +1,13 @@
 // skillcoach evaluate-skills --task T (--model FILE | --time-heuristic) [--count N] [--seed S]
-// [--robustness | --planted-weaknesses [--learners N]]: segments freshly
+// [--robustness | --planted-weaknesses [--learners N] | --realistic-drivers]: segments freshly
 // generated expert demonstrations (a seed other than the model's training seed) with the model, or with the
 // paper's Time Heuristic baseline as the yardstick, and prints the quality report
 // (teaching/tasks/skill_quality.hpp) as JSON: writing boundary precision/recall/F1 against the true character
 // boundaries, parking skill purity, per-skill usage, and (models only) the action reconstruction error.
 // For writing, --robustness prints the same model's figures on realistic learners (writing_robustness.hpp)
 // and --planted-weaknesses Alg. 2's recovery of a badly written letter (writing_planted_weakness.hpp), as tables.
+// --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
+// drives' (docs/skills.md, "Robustness on realistic learners").
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -21,9 +23,11 @@
 #include "engine/writing/step_data.hpp"
 #include "engine/writing/word_generator.hpp"
 #include "teaching/skills/compile_config.hpp"
+#include "teaching/learners/parking/drive_skill_agreement.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
@@ -44,7 +48,27 @@ struct EvaluateArgs {
   bool robustness = false;
   bool planted = false;
   int learners = 20;
+  bool realistic_drivers = false;
 };
+
+// Parking: the same held-out scenarios' expert drives driven by realistic drivers
+// (teaching/learners/parking/drive_skill_agreement.hpp), one row per condition.
+Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint64_t seed) {
+  std::vector<ParkingTrial> drives;
+  for (ParkingTrial& t : generate_parking_pool({count, seed}))
+    if (t.success.value_or(false)) drives.push_back(std::move(t));
+  Json rows = Json::array();
+  for (const AgreementRow& r : measure_drive_agreement(extractor, drives, standard_drive_conditions(), seed)) {
+    rows.push_back({{"condition", r.condition},
+                    {"drives", r.drives},
+                    {"steps", r.agreement.steps},
+                    {"agreement", r.agreement.share()},
+                    {"still_parked", r.successes}});
+    std::fprintf(stderr, "  %-48s agreement %5.1f %%  (%d steps, %d of %d drives still parked)\n", r.condition.c_str(),
+                 100.0 * r.agreement.share(), r.agreement.steps, r.successes, r.drives);
+  }
+  return rows;
+}
 
 // One entry per demonstration: what it is, its true boundaries (writing) and the predicted segments, so a
 // researcher can see *where* a model goes wrong, not only the totals.
@@ -137,6 +161,16 @@ int run(const EvaluateArgs& args) {
   report["seed"] = seed;
   report["segmentation_seconds"] = seconds;
   if (args.details) report["demos"] = demo_details(data, segmentations);
+  if (args.realistic_drivers) {
+    if (args.task != "parking") throw InputError("--realistic-drivers", "only for --task parking");
+    std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
+    if (model) {
+      const CompileExtractor extractor = CompileExtractor::load(args.model, args.task);
+      report["realistic_drivers"] = realistic_driver_rows(extractor, args.count, seed);
+    } else {
+      report["realistic_drivers"] = realistic_driver_rows(heuristic, args.count, seed);
+    }
+  }
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
 }
@@ -152,6 +186,9 @@ CommandRunner setup(CLI::App& sub) {
   heuristic->excludes(model);
   sub.add_option("--count", args->count, "Demonstrations to generate")->capture_default_str()->check(CLI::Range(1, 100000));
   sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
+  sub.add_flag("--realistic-drivers", args->realistic_drivers,
+               "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
+               "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
   sub.add_flag("--details", args->details,
                "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");
   sub.add_flag("--robustness", args->robustness,

@@ -12,6 +12,7 @@
 #include "engine/core/json_file.hpp"
 #include "teaching/curricula/curriculum.hpp"
 #include "teaching/drills/drill_plan.hpp"
+#include "teaching/expertise/trace_alignment.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
 namespace sc {
@@ -62,6 +63,15 @@ class TaskKit {
   // own last-step reward (its scenario carries the drill's start and goal). Writing: the overlap of the
   // attempt's ink with the drill's pen path (the drill is not a whole word, so reward_of would not fit).
   virtual double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const = 0;
+
+  // Quality-aware expertise (teaching/expertise/execution_expertise.hpp). The points dynamic time warping
+  // aligns an expert's steps with a learner's, one per step (parking: car x, y in m and signed speed in m/s;
+  // writing: pen x, y in px).
+  virtual std::vector<TracePoint3> trace_points(const StepSequence& steps) const = 0;
+  // The task's own reward terms on the learner's steps `path` aligns with the expert's steps [begin, end):
+  // <= 0, 0 when the learner's part repeats the expert's.
+  virtual double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
+                                  int begin, int end) const = 0;
 };
 
 }  // namespace sc

@@ -1,5 +1,8 @@
 #include "teaching/tasks/diagnosis.hpp"
 
+#include <algorithm>
+#include <tuple>
+
 #include "engine/core/error.hpp"
 #include "teaching/drills/drill_builder.hpp"
 #include "teaching/drills/drill_plan_json.hpp"
@@ -8,9 +11,29 @@
 
 namespace sc {
 
-Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed) {
+namespace {
+
+// Alg. 2's evidence of one trial plus each expert segment's aligned learner steps and execution score.
+ExecutionTrial execution_trial(const TaskKit& kit, int index, const DiagnosedTrial& d, const StepSequence& expert,
+                               const StepSequence& learner, ExpertiseMode mode) {
+  ExecutionTrial out{{index, d.expert, d.student, d.reward}, {}};
+  const StepAlignment path = align_traces(kit.trace_points(expert), kit.trace_points(learner));
+  for (const SkillSegment& s : d.expert.segments) {
+    SegmentExecution e;
+    std::tie(e.learner_begin, e.learner_end) = aligned_span(path, s.begin, s.end);
+    if (mode == ExpertiseMode::QualityAware)
+      e.reward = std::min(kit.execution_reward(expert, learner, path, s.begin, s.end), 0.0);
+    out.segments.push_back(e);
+  }
+  return out;
+}
+
+}  // namespace
+
+Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed, ExpertiseMode mode) {
   Diagnosis out;
-  std::vector<ExpertiseTrial> evidence;
+  out.mode = mode;
+  std::vector<ExecutionTrial> evidence;
   const std::vector<ExpertDemo>& pool = kit.expert_pool();
   for (std::size_t i = 0; i < trials.size(); ++i) {
     const std::string where = "trial " + std::to_string(i);
@@ -23,15 +46,21 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
     const Json expert = kit.expert_trial(d.scenario);
     for (std::size_t k = 0; k < pool.size() && d.pool_index < 0; ++k)
       if (pool[k].trial == expert) d.pool_index = static_cast<int>(k);
+    const StepSequence expert_steps =
+        d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].steps : kit.steps_of(expert);
     d.expert = d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].skills
-                                 : kit.extractor().extract(kit.steps_of(expert));
-    d.student = kit.extractor().extract(kit.steps_of(trial));
+                                 : kit.extractor().extract(expert_steps);
+    const StepSequence learner_steps = kit.steps_of(trial);
+    d.student = kit.extractor().extract(learner_steps);
     d.reward = kit.reward_of(trial);
-    evidence.push_back({static_cast<int>(i), d.expert, d.student, d.reward});
+    evidence.push_back(execution_trial(kit, static_cast<int>(i), d, expert_steps, learner_steps, mode));
     out.trials.push_back(std::move(d));
   }
   const CurriculumConfig config = kit.curriculum_config();
-  out.expertise = estimate_expertise(evidence, kit.extractor().num_skills(), config.drills.num_targets);
+  ExecutionExpertise estimate =
+      estimate_execution_expertise(evidence, kit.extractor().num_skills(), config.drills.num_targets, mode);
+  out.expertise = std::move(estimate.estimate);
+  out.why = std::move(estimate.why);
   const DrillBuilder builder(demo_skills(pool), config.drills);
   Rng rng(seed);
   for (const DrillPlan& plan : builder.individualized(out.expertise, rng))
@@ -56,12 +85,24 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
                       {"skills", segmentation_json(t.student)},
                       {"expert_skills", segmentation_json(t.expert)}});
   out["trials"] = std::move(trials);
+  out["expertise_mode"] = diagnosis.mode == ExpertiseMode::Alg2 ? "alg2" : "quality-aware";
   out["expertise"] = expertise_to_json(diagnosis.expertise);
   Json targets = Json::array();
-  for (int m : diagnosis.expertise.targets)
-    targets.push_back({{"skill", m},
-                       {"expertise", diagnosis.expertise.expertise[static_cast<std::size_t>(m)]},
-                       {"description", kit.describe_skill(m)}});
+  for (std::size_t k = 0; k < diagnosis.expertise.targets.size(); ++k) {
+    const int m = diagnosis.expertise.targets[k];
+    Json target = {{"skill", m},
+                   {"expertise", diagnosis.expertise.expertise[static_cast<std::size_t>(m)]},
+                   {"description", kit.describe_skill(m)}};
+    if (k < diagnosis.why.size()) {
+      const TargetWhy& w = diagnosis.why[k];
+      target["why"] = {{"reason", target_reason_words(w.reason)},
+                       {"trial", w.trial},
+                       {"penalty", w.delta},
+                       {"expert_steps", {w.expert_begin, w.expert_end}},
+                       {"learner_steps", {w.learner_begin, w.learner_end}}};
+    }
+    targets.push_back(std::move(target));
+  }
   out["targets"] = std::move(targets);
   Json drills = Json::array();
   for (const PlayableDrill& d : diagnosis.drills) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/expertise/expertise_estimation.hpp"
 #include "teaching/sessions/task_kit.hpp"
 
@@ -20,17 +21,24 @@ struct DiagnosedTrial {
 
 struct Diagnosis {
   std::vector<DiagnosedTrial> trials;
-  ExpertiseEstimate expertise;        // Alg. 2 (targets: N_target of the kit's drill config)
+  ExpertiseMode mode = ExpertiseMode::Alg2;
+  ExpertiseEstimate expertise;        // Alg. 2 or quality-aware (targets: N_target of the kit's drill config)
+  std::vector<TargetWhy> why;         // why each target was chosen and where, parallel to expertise.targets
   std::vector<PlayableDrill> drills;  // Alg. 3 for the targets, weakest first, projected by the kit
 };
 
 // `trials`: trial documents of the kit's task. Deterministic in `seed` (the random expert segments of the
-// drills). InputError for a trial of another task or a malformed trial.
-Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed);
+// drills). InputError for a trial of another task or a malformed trial. Each expert segment is aligned with
+// the learner's trial (dynamic time warping on kit.trace_points) for the "where" of the explanation and, in
+// quality-aware mode, scored with kit.execution_reward.
+Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed,
+                          ExpertiseMode mode = ExpertiseMode::Alg2);
 
 Json segmentation_json(const Segmentation& segmentation);
 // {"task", "extractor", "extractor_notice", "trials":[{scenario, pool_index, reward, skills, expert_skills}],
-//  "expertise":{...}, "targets":[{skill, expertise, description}], "drills":[{plan..., "skills_described",
+//  "expertise_mode":"alg2"|"quality-aware", "expertise":{...}, "targets":[{skill, expertise, description,
+//  "why":{"reason":"missing"|"done with a large error here"|"no mistake seen", "trial", "penalty", "expert_steps":[b, e],
+//  "learner_steps":[b, e]}}], "drills":[{plan..., "skills_described",
 //  "steps", "success", "return", "ghost_path", "segment_starts", "trial"}]}
 Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis);
 

@@ -6,6 +6,7 @@
 #include "engine/core/error.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/parking_execution.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -131,6 +132,13 @@ double ParkingKit::drill_attempt_reward(const PlayableDrill& drill, const Json& 
   if (!(trial.scenario == projector_->drill_scenario(drill.plan)))
     throw InputError("drill attempt", "$.scenario: not the drill's scenario (start and goal differ)");
   return reward_of(attempt);
+}
+
+std::vector<TracePoint3> ParkingKit::trace_points(const StepSequence& steps) const { return parking_trace_points(steps); }
+
+double ParkingKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
+                                 int begin, int end) const {
+  return parking_execution_reward(expert, learner, path, begin, end);
 }
 
 }  // namespace sc

@@ -60,6 +60,11 @@ class ParkingKit final : public TaskKit {
   Json drill_trial(const PlayableDrill& drill) const override;
   // reward_of(attempt); InputError when the attempt was played in another scenario than the drill's.
   double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
+  // (x, y, speed) of the car; the reward's weighted distance between the learner's and the expert's motion,
+  // each seen from where its part starts (parking_execution.hpp).
+  std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
+                          int end) const override;
 
   // What each skill does on the expert pool (describe_skill's source; tests find reversing skills here).
   const std::vector<ParkingSkillMotion>& skill_motions() const { return motions_; }

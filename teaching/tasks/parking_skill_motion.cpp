@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
-#include "teaching/tasks/distinct_skill_words.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -13,6 +13,7 @@ namespace {
 constexpr double kMovingSpeed = 0.5;    // m/s: slower counts as "nearly stopped"
 constexpr double kTurningSteer = 0.15;  // |mean u1| below this is "straight"
 constexpr double kBraking = 0.15;       // |mean u0| against the motion above this is "braking"
+constexpr double kSharpSteer = 0.5;     // |u1| above this is more than half lock
 }  // namespace
 
 std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequence>& experts,
@@ -21,6 +22,7 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
   std::vector<ParkingSkillMotion> out(static_cast<std::size_t>(std::max(num_skills, 0)));
   for (std::size_t e = 0; e < experts.size() && e < segmentations.size(); ++e) {
     const StepSequence& x = experts[e];
+    const double length = std::max(x.length(), 1);
     for (const SkillSegment& seg : segmentations[e].segments) {
       if (seg.skill < 0 || seg.skill >= num_skills) continue;
       ParkingSkillMotion& m = out[static_cast<std::size_t>(seg.skill)];
@@ -30,8 +32,14 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
         const double speed = vehicle_from_observation(o).speed;
         m.mean_speed += speed;
         m.reverse_fraction += speed < 0.0 ? 1.0 : 0.0;
-        m.mean_acceleration += x.actions[static_cast<std::size_t>(2 * t)];
-        m.mean_steering += x.actions[static_cast<std::size_t>(2 * t + 1)];
+        const double u0 = x.actions[static_cast<std::size_t>(2 * t)];
+        const double u1 = x.actions[static_cast<std::size_t>(2 * t + 1)];
+        m.mean_acceleration += u0;
+        m.mean_steering += u1;
+        m.sharp_fraction += std::abs(u1) > kSharpSteer ? 1.0 : 0.0;
+        m.mean_abs_steering += std::abs(u1);
+        m.mean_progress += t / length;
+        m.braking_fraction += std::abs(speed) >= kMovingSpeed && u0 * speed < 0.0 && std::abs(u0) >= kBraking ? 1.0 : 0.0;
         ++m.steps;
       }
     }
@@ -43,8 +51,21 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
     m.reverse_fraction /= n;
     m.mean_acceleration /= n;
     m.mean_steering /= n;
+    m.sharp_fraction /= n;
+    m.braking_fraction /= n;
+    m.mean_abs_steering /= n;
+    m.mean_progress /= n;
   }
   return out;
+}
+
+bool motion_reverses(const ParkingSkillMotion& m) {
+  return m.steps > 0 && (m.mean_speed <= -kMovingSpeed || (m.mean_speed < kMovingSpeed && m.mean_acceleration < 0.0));
+}
+
+bool motion_brakes(const ParkingSkillMotion& m) {
+  const bool moving = std::abs(m.mean_speed) >= kMovingSpeed;
+  return m.steps > 0 && moving && m.mean_acceleration * m.mean_speed < 0.0 && std::abs(m.mean_acceleration) >= kBraking;
 }
 
 std::string describe_parking_motion(const ParkingSkillMotion& m) {
@@ -63,26 +84,89 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
   else
     words += " straight";
   // Acceleration against the direction of motion slows the car down.
-  const bool moving = std::abs(m.mean_speed) >= kMovingSpeed;
-  if (moving && m.mean_acceleration * m.mean_speed < 0.0 && std::abs(m.mean_acceleration) >= kBraking)
-    words += ", braking";
+  if (motion_brakes(m)) words += ", braking";
   return words;
 }
 
+namespace {
+
+// What can set apart skills that share words: a value per skill, its scale and graded words (low to high).
+struct Attribute {
+  double (*value)(const ParkingSkillMotion&);
+  double scale;
+  std::vector<std::vector<std::string>> words;  // words[n - 2]: for a group of n
+};
+
+const std::vector<Attribute>& attributes() {
+  static const std::vector<Attribute> list = {
+      {[](const ParkingSkillMotion& m) { return std::abs(m.mean_speed); }, 8.0,
+       {{"slowly", "quickly"}, {"slowly", "at medium speed", "quickly"}, {"very slowly", "slowly", "quickly", "very quickly"}}},
+      {[](const ParkingSkillMotion& m) { return m.mean_abs_steering; }, 1.0,
+       {{"with a gentle turn", "with a sharp turn"},
+        {"with a gentle turn", "with a medium turn", "with a sharp turn"},
+        {"with a very gentle turn", "with a gentle turn", "with a sharp turn", "with a very sharp turn"}}},
+      {[](const ParkingSkillMotion& m) { return m.mean_progress; }, 1.0,
+       {{"early in the manoeuvre", "late in the manoeuvre"},
+        {"at the start of the manoeuvre", "midway through the manoeuvre", "at the end of the manoeuvre"},
+        {"at the very start of the manoeuvre", "early in the manoeuvre", "late in the manoeuvre",
+         "at the very end of the manoeuvre"}}},
+  };
+  return list;
+}
+
+// The smallest gap between the group's sorted values, over the attribute's scale.
+double separation(const Attribute& a, const std::vector<ParkingSkillMotion>& motions, std::vector<std::size_t> group) {
+  std::sort(group.begin(), group.end(), [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
+  double gap = 1e300;
+  for (std::size_t k = 1; k < group.size(); ++k)
+    gap = std::min(gap, (a.value(motions[group[k]]) - a.value(motions[group[k - 1]])) / a.scale);
+  return gap;
+}
+
+// Appends to words[i] of each skill in `group` (2..4 skills) the graded words of the attribute that sets
+// them apart most.
+void grade(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions, std::vector<std::size_t> group) {
+  const auto& list = attributes();
+  std::size_t best = 0;
+  for (std::size_t a = 1; a < list.size(); ++a)
+    if (separation(list[a], motions, group) > separation(list[best], motions, group)) best = a;
+  const Attribute& a = list[best];
+  std::stable_sort(group.begin(), group.end(), [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
+  for (std::size_t k = 0; k < group.size(); ++k) words[group[k]] += ", " + a.words[group.size() - 2][k];
+}
+
+void tell_apart(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions,
+                const std::vector<std::size_t>& group) {
+  if (group.size() < 2) return;
+  if (group.size() <= 4) {
+    grade(words, motions, group);
+    return;
+  }
+  // Too many for graded words: split by thirds of the manoeuvre first, then grade within each third.
+  const std::vector<std::string> thirds = attributes()[2].words[1];
+  std::map<int, std::vector<std::size_t>> by_third;
+  for (std::size_t i : group) by_third[std::min(2, static_cast<int>(3.0 * motions[i].mean_progress))].push_back(i);
+  for (auto& [third, members] : by_third) {
+    for (std::size_t i : members) words[i] += ", " + thirds[static_cast<std::size_t>(third)];
+    if (members.size() <= 4) {
+      tell_apart(words, motions, members);
+    } else {
+      for (std::size_t k = 0; k < members.size(); ++k) words[members[k]] += " (" + std::to_string(k + 1) + ")";
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<std::string> describe_parking_motions(const std::vector<ParkingSkillMotion>& motions) {
   std::vector<std::string> words;
-  std::vector<bool> used;
-  for (const auto& m : motions) {
-    words.push_back(describe_parking_motion(m));
-    used.push_back(m.steps > 0);
+  std::map<std::string, std::vector<std::size_t>> groups;  // shared words -> used skills
+  for (std::size_t i = 0; i < motions.size(); ++i) {
+    words.push_back(describe_parking_motion(motions[i]));
+    if (motions[i].steps > 0) groups[words.back()].push_back(i);
   }
-  return distinct_skill_words(
-      std::move(words), used,
-      [&](std::size_t a, std::size_t b) { return std::abs(motions[a].mean_speed) < std::abs(motions[b].mean_speed); },
-      [](const std::string& text, std::size_t k, std::size_t n) {
-        if (n == 2) return text + (k == 0 ? ", slowly" : ", quickly");
-        return text + ", pace " + std::to_string(k + 1) + " of " + std::to_string(n);
-      });
+  for (const auto& [text, group] : groups) tell_apart(words, motions, group);
+  return words;
 }
 
 }  // namespace sc

@@ -15,6 +15,10 @@ struct ParkingSkillMotion {
   double mean_acceleration = 0.0; // u0 in [-1, 1]
   double mean_steering = 0.0;     // u1 in [-1, 1], > 0 = right
   double reverse_fraction = 0.0;  // share of the steps whose speed is negative
+  double sharp_fraction = 0.0;    // share of the steps steering more than half lock (|u1| > 0.5)
+  double braking_fraction = 0.0;  // share of the steps braking: |u0| >= 0.15 against the motion while moving
+  double mean_abs_steering = 0.0; // |u1|: how sharply the skill turns
+  double mean_progress = 0.0;     // step / drive length in [0, 1): which part of the manoeuvre it belongs to
 };
 
 // Step-weighted means over every segment of each skill id in [0, num_skills).
@@ -22,11 +26,21 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
                                                       const std::vector<Segmentation>& segmentations,
                                                       int num_skills);
 
+// What the words say (the rules describe_parking_motion uses): the skill reverses ("reversing", "starting to
+// reverse": mean speed <= -0.5 m/s, or nearly stopped with mean u0 < 0) / brakes (mean u0 against the
+// motion, |mean u0| >= 0.15, while moving).
+bool motion_reverses(const ParkingSkillMotion& motion);
+bool motion_brakes(const ParkingSkillMotion& motion);
+
 // "reversing while steering left, braking", "driving forward straight", "unused skill" ...
 std::string describe_parking_motion(const ParkingSkillMotion& motion);
-// The words of every skill, distinct among used skills: skills that share words get their pace added
-// ("reversing straight, slowly" / "..., quickly"; "..., pace 2 of 3" for three or more), so a learner never
-// sees two different skills under one name.
+// The words of every skill, distinct among used skills, so a learner never sees two different skills under
+// one name. Skills that share words get what sets them apart, in words a learner can act on: their speed
+// ("slowly" / "quickly"), how sharply they turn ("with a gentle turn" / "with a sharp turn") or which part
+// of the manoeuvre they belong to ("early in the manoeuvre" / "late in the manoeuvre", "at the start /
+// midway through / at the end of the manoeuvre") - whichever of the three differs most within the group
+// (speeds compared over 8 m/s, steering over full lock, progress over the whole drive). Two to four skills
+// get graded words; a larger group is first split by the part of the manoeuvre (thirds).
 std::vector<std::string> describe_parking_motions(const std::vector<ParkingSkillMotion>& motions);
 
 }  // namespace sc

@@ -10,6 +10,7 @@
 #include "engine/writing/writing_trial.hpp"
 #include "teaching/expertise/expertise_estimation.hpp"
 #include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/writing_execution.hpp"
 #include "teaching/tasks/writing_steps.hpp"
 
 namespace sc {
@@ -151,6 +152,13 @@ Json WritingKit::drill_trial(const PlayableDrill& drill) const {
 double WritingKit::drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const {
   const writing::WritingTrial trial = writing::parse_writing_trial(attempt, "drill attempt");
   return overlap_reward(WritingDrillProjector::drill_trace(drill), trial.points);
+}
+
+std::vector<TracePoint3> WritingKit::trace_points(const StepSequence& steps) const { return writing_trace_points(steps); }
+
+double WritingKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
+                                 int begin, int end) const {
+  return writing_execution_reward(expert, learner, path, begin, end);
 }
 
 }  // namespace sc

@@ -57,6 +57,11 @@ class WritingKit final : public TaskKit {
   Json drill_trial(const PlayableDrill& drill) const override;
   // Overlap of the attempt's ink with the drill's pen path, mapped like reward_of.
   double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
+  // (x, y) of the pen; the writing score's overlap credit between the expert's segment and the learner's
+  // aligned pen points (writing_execution.hpp).
+  std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
+                          int end) const override;
 
   const std::vector<WritingSkillPlace>& skill_places() const { return places_; }
   const std::vector<writing::WordTrajectory>& gold_words() const { return golds_; }

@@ -67,6 +67,24 @@ TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
   EXPECT_FALSE(d.contains("boundaries"));
 }
 
+TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition) {
+  const auto r =
+      run_skillcoach("evaluate-skills --task parking --count 3 --realistic-drivers --model " + test::tiny_model("parking").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json rows = json_of(r.output).at("realistic_drivers");
+  ASSERT_EQ(rows.size(), 8u);
+  // 15 Hz input without noise or delay changes nothing a skill model sees, beyond the gamepad's dead zone.
+  EXPECT_GE(rows[0].at("agreement").get<double>(), 0.9) << rows[0];
+  for (const Json& row : rows) {
+    EXPECT_GE(row.at("agreement").get<double>(), 0.0) << row;
+    EXPECT_LE(row.at("agreement").get<double>(), 1.0) << row;
+    EXPECT_GT(row.at("steps").get<int>(), 0) << row;
+  }
+  const auto writing = run_skillcoach("evaluate-skills --task writing --count 2 --realistic-drivers --model " +
+                                      test::tiny_model("writing").string());
+  EXPECT_EQ(writing.exit_code, 2) << writing.output;
+}
+
 TEST(EvaluateSkillsCommand, RefusesTheTrainingSeedAndAModelOfAnotherTask) {
   const auto same = run_skillcoach("evaluate-skills --task writing --seed 3 --model " + test::tiny_model("writing").string());
   EXPECT_EQ(same.exit_code, 2) << same.output;

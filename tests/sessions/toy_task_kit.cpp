@@ -167,6 +167,26 @@ double ToyTaskKit::drill_attempt_reward(const PlayableDrill& drill, const Json& 
   return reward_of(scored);
 }
 
+std::vector<TracePoint3> ToyTaskKit::trace_points(const StepSequence& steps) const {
+  std::vector<TracePoint3> out;
+  for (int t = 0; t < steps.length(); ++t)
+    out.push_back({steps.states[static_cast<std::size_t>(t * steps.state_dim)], 0.0, 0.0});
+  return out;
+}
+
+double ToyTaskKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
+                                    int begin, int end) const {
+  const std::vector<TracePoint3> e = trace_points(expert), l = trace_points(learner);
+  double differ = 0.0;
+  int pairs = 0;
+  for (const auto& [i, j] : path) {
+    if (i < begin || i >= end) continue;
+    differ += e[static_cast<std::size_t>(i)][0] != l[static_cast<std::size_t>(j)][0];
+    ++pairs;
+  }
+  return pairs > 0 ? -differ / pairs : 0.0;
+}
+
 std::string ToyTaskKit::describe_skill(int skill) const { return "gesture " + std::to_string(skill); }
 
 }  // namespace sc::test

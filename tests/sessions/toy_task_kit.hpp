@@ -38,6 +38,10 @@ class ToyTaskKit final : public TaskKit {
   double time_limit_seconds(int expert_steps) const override { return 0.2 * expert_steps * 2.0; }
   Json drill_trial(const PlayableDrill& drill) const override;
   double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
+  // The position is the 1-D car's (state 0); an aligned step's execution error is 1 when the positions differ.
+  std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
+                          int end) const override;
 
   mutable int fresh_calls = 0;  // how often fresh_scenarios ran (tests check caching)
 

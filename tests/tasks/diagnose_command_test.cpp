@@ -86,6 +86,39 @@ TEST(DiagnoseCommand, ParkingLearnerOnAPoolScenarioIsComparedWithThatExpert) {
   }
 }
 
+TEST(DiagnoseCommand, QualityAwareExpertiseAddsToAlg2AndEveryTargetSaysWhyAndWhere) {
+  const Json pool = read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
+  Json learner = pool.at("trials")[4];
+  for (const char* key : {"states", "rewards", "success"}) learner.erase(key);
+  Json& actions = learner.at("actions");
+  actions.erase(actions.begin() + static_cast<long>(actions.size() / 2), actions.end());
+  const auto trial = scratch("half_quality.json");
+  write_json_file(trial, learner);
+  const auto alg2 = scratch("alg2.json"), quality = scratch("quality.json");
+  ASSERT_EQ(run("diagnose --task parking --out " + alg2.string() + " " + trial.string(), "alg2").status, 0);
+  const Result r = run("diagnose --task parking --expertise quality-aware --out " + quality.string() + " " + trial.string(), "quality");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const Json a = read_json_file(alg2), q = read_json_file(quality);
+  EXPECT_EQ(a.at("expertise_mode"), "alg2");
+  EXPECT_EQ(q.at("expertise_mode"), "quality-aware");
+  const Json& ea = a.at("expertise").at("expertise");
+  const Json& eq = q.at("expertise").at("expertise");
+  for (std::size_t m = 0; m < ea.size(); ++m) EXPECT_LE(eq[m].get<double>(), ea[m].get<double>() + 1e-12) << m;
+  const int learner_steps = static_cast<int>(actions.size());
+  ASSERT_FALSE(q.at("targets").empty());
+  for (const Json* doc : {&a, &q})
+    for (const Json& t : doc->at("targets")) {
+      const Json& why = t.at("why");
+      const std::string reason = why.at("reason");
+      EXPECT_TRUE(reason == "missing" || reason == "done with a large error here" || reason == "no mistake seen") << t;
+      EXPECT_EQ(reason == "no mistake seen", why.at("penalty").get<double>() == 0.0) << t;
+      EXPECT_EQ(why.at("trial"), 0);
+      EXPECT_GE(why.at("learner_steps")[0].get<int>(), 0);
+      EXPECT_LE(why.at("learner_steps")[1].get<int>(), learner_steps);
+      EXPECT_LT(why.at("expert_steps")[0].get<int>(), why.at("expert_steps")[1].get<int>());
+    }
+}
+
 TEST(DiagnoseCommand, TrialOfAnotherTaskIsAnInputErrorNamingTheFile) {
   const auto trial = scratch("wrong.json");
   write_json_file(trial, Json{{"task", "parking"}, {"scenario", {{"word", "ab"}}}, {"points", Json::array()}});

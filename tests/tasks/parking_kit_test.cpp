@@ -154,7 +154,7 @@ TEST(ParkingKit, TimeLimitGrowsWithTheExpertsLengthUpToTheHorizon) {
   EXPECT_DOUBLE_EQ(kit().time_limit_seconds(1000), 20.0);
 }
 
-TEST(ParkingKit, SkillsSharingWordsAreToldApartByTheirPace) {
+TEST(ParkingKit, SkillsSharingWordsAreToldApartByWhatDiffersMost) {
   ParkingSkillMotion slow_back{10, -1.0, -0.2, 0.0, 1.0}, fast_back{12, -4.0, -0.5, 0.0, 1.0};
   ParkingSkillMotion forward{8, 3.0, 0.5, 0.0, 0.0}, unused{};
   const auto words = describe_parking_motions({fast_back, unused, forward, slow_back, unused});
@@ -164,9 +164,25 @@ TEST(ParkingKit, SkillsSharingWordsAreToldApartByTheirPace) {
   EXPECT_EQ(words[1], "unused skill");
   EXPECT_EQ(words[4], "unused skill");
   const auto three = describe_parking_motions({fast_back, slow_back, {5, -2.0, -0.3, 0.0, 1.0}});
-  EXPECT_EQ(three[1], "reversing straight, pace 1 of 3");
-  EXPECT_EQ(three[2], "reversing straight, pace 2 of 3");
-  EXPECT_EQ(three[0], "reversing straight, pace 3 of 3");
+  EXPECT_EQ(three[1], "reversing straight, slowly");
+  EXPECT_EQ(three[2], "reversing straight, at medium speed");
+  EXPECT_EQ(three[0], "reversing straight, quickly");
+  // Same speed, different lock: how sharp they turn.
+  ParkingSkillMotion gentle{10, -2.0, -0.3, -0.3, 1.0}, sharp{10, -2.1, -0.3, -0.4, 1.0};
+  gentle.mean_abs_steering = 0.3;
+  sharp.mean_abs_steering = 0.9;
+  const auto turns = describe_parking_motions({gentle, sharp});
+  EXPECT_EQ(turns[0], "reversing while steering left, with a gentle turn");
+  EXPECT_EQ(turns[1], "reversing while steering left, with a sharp turn");
+  // Same speed and lock, different part of the drive.
+  ParkingSkillMotion early = gentle, late = gentle;
+  early.mean_progress = 0.1;
+  late.mean_progress = 0.8;
+  const auto parts = describe_parking_motions({late, early});
+  EXPECT_EQ(parts[0], "reversing while steering left, late in the manoeuvre");
+  EXPECT_EQ(parts[1], "reversing while steering left, early in the manoeuvre");
+  for (const auto& w : {words, three, turns, parts})
+    for (const std::string& text : w) EXPECT_EQ(text.find("pace"), std::string::npos) << text;
 }
 
 TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {

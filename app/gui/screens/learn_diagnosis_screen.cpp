@@ -1,7 +1,7 @@
 // Analysis and diagnosis: a progress note while the pre-test (or the last round's practice) is segmented and
 // Alg. 2 runs (a fraction of a second), then one bar per skill the expert used — longer = more mistakes —
-// each with a small picture of the skill's expert segment and the kit's plain words; the skills the drills
-// will target are highlighted.
+// each with a small picture of the skill's expert segment, the kit's plain words and why it lost expertise
+// (its largest penalty: the trial it was missing in); the skills the drills will target are highlighted.
 #include <imgui.h>
 
 #include <algorithm>
@@ -17,6 +17,23 @@
 
 namespace sc {
 namespace {
+
+// Why a skill lost expertise and where: its largest penalty, e.g. "missing in trial 2" (Alg. 2 charges a
+// skill the expert used in a trial that the learner's trial does not show).
+std::string why_words(const ExpertiseEstimate& e, int skill) {
+  const auto& list = e.contributions[static_cast<std::size_t>(skill)];
+  const ExpertiseContribution* worst = nullptr;
+  int penalties = 0;
+  for (const ExpertiseContribution& c : list) {
+    if (c.delta <= 0.0) continue;
+    ++penalties;
+    if (!worst || c.delta > worst->delta) worst = &c;
+  }
+  if (!worst) return "";
+  std::string out = "missing in trial " + std::to_string(worst->trial + 1);
+  if (penalties > 1) out += " (and " + std::to_string(penalties - 1) + " more)";
+  return out;
+}
 
 class LearnDiagnosisScreen final : public Screen {
  public:
@@ -91,6 +108,11 @@ class LearnDiagnosisScreen final : public Screen {
       const std::string words = kit.describe_skill(m);
       if (drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
       ImGui::Text("%s%s", words.c_str(), drilled ? "   - drills now" : "");
+      const std::string why = why_words(e, m);
+      if (!why.empty()) {
+        ImGui::SameLine(0, 10 * sc);
+        ImGui::TextDisabled("%s", why.c_str());
+      }
       if (drilled) ImGui::PopStyleColor();
       const float fraction = static_cast<float>(-e.expertise[static_cast<std::size_t>(m)] / worst);
       ImGui::PushStyleColor(ImGuiCol_PlotHistogram, drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));

@@ -1,0 +1,89 @@
+#include "teaching/expertise/execution_expertise.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+void check(const ExecutionTrial& t, std::size_t index) {
+  const std::string where = "expertise trial " + std::to_string(index);
+  if (t.segments.size() != t.trial.expert.segments.size())
+    throw InputError(where, "execution scores must be given for each of the expert's segments");
+  for (const SegmentExecution& s : t.segments)
+    if (!std::isfinite(s.reward) || s.reward > 0.0)
+      throw InputError(where, "execution reward " + std::to_string(s.reward) + " must be finite and <= 0");
+}
+
+// The largest penalty of `skill` over the trials, with where it happened.
+TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, ExpertiseMode mode) {
+  TargetWhy best;
+  best.skill = skill;
+  best.delta = -1.0;
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    const ExecutionTrial& et = trials[t];
+    std::set<int> shown;
+    for (const SkillSegment& s : et.trial.student.segments) shown.insert(s.skill);
+    for (std::size_t k = 0; k < et.trial.expert.segments.size(); ++k) {
+      const SkillSegment& e = et.trial.expert.segments[k];
+      if (e.skill != skill) continue;
+      const double j = static_cast<double>(k + 1);
+      const double missing = shown.count(skill) ? 0.0 : -et.trial.student_reward / j;
+      const double error = mode == ExpertiseMode::QualityAware ? -kExecutionWeight * et.segments[k].reward / j : 0.0;
+      const double delta = std::max(missing, error);
+      if (delta <= best.delta) continue;
+      best = {skill, missing >= error ? TargetReason::Missing : TargetReason::LargeError, static_cast<int>(t),
+              static_cast<int>(k + 1), delta, e.begin, e.end, et.segments[k].learner_begin, et.segments[k].learner_end};
+    }
+  }
+  if (best.delta <= 0.0) {
+    best.delta = 0.0;
+    best.reason = TargetReason::NoMistake;
+  }
+  return best;
+}
+
+}  // namespace
+
+const char* target_reason_words(TargetReason reason) {
+  switch (reason) {
+    case TargetReason::Missing: return "missing";
+    case TargetReason::LargeError: return "done with a large error here";
+    case TargetReason::NoMistake: return "no mistake seen";
+  }
+  return "missing";
+}
+
+ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
+                                                int num_targets, ExpertiseMode mode) {
+  std::vector<ExpertiseTrial> plain;
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    check(trials[t], t);
+    plain.push_back(trials[t].trial);
+  }
+  ExecutionExpertise out;
+  out.estimate = estimate_expertise(plain, num_skills, num_targets);
+  if (mode == ExpertiseMode::QualityAware) {
+    for (std::size_t t = 0; t < trials.size(); ++t) {
+      const ExecutionTrial& et = trials[t];
+      for (std::size_t k = 0; k < et.segments.size(); ++k) {
+        const int j = static_cast<int>(k + 1);
+        const double q = et.segments[k].reward;
+        if (q == 0.0) continue;
+        const auto m = static_cast<std::size_t>(et.trial.expert.segments[k].skill);
+        const double delta = -kExecutionWeight * q / j;
+        out.estimate.expertise[m] -= delta;
+        out.estimate.contributions[m].push_back({static_cast<int>(t), et.trial.scenario, j, q, delta});
+      }
+    }
+    rank_expertise(out.estimate, num_targets);
+  }
+  for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, mode));
+  return out;
+}
+
+}  // namespace sc

@@ -1,0 +1,65 @@
+#pragma once
+// Quality-aware expertise (beyond the paper): Alg. 2 only asks whether a skill is present in the learner's
+// segmentation, so a skill done recognisably but badly is never diagnosed, and a skill the segmentation
+// happens to miss is charged the whole trial's reward. This adds a per-skill execution term:
+//
+//   E^q_m = E_m (Alg. 2, unchanged)  +  w · Σ_ξ Σ_{j : m^e_j = m} q_{ξ,j} / j
+//
+// where q_{ξ,j} <= 0 is the task's own reward of the learner's part aligned (dynamic time warping,
+// trace_alignment.hpp) with the expert's j-th segment of trial ξ, relative to a perfect copy (0). The
+// 1/j weight is Alg. 2's: early skills weigh more. w = kExecutionWeight.
+//
+// Why each target was chosen is its largest penalty: "missing" (Alg. 2's) or "done with a large error"
+// (the execution term), with the trial, the expert's steps and the learner's aligned steps.
+#include <vector>
+
+#include "teaching/expertise/expertise_estimation.hpp"
+
+namespace sc {
+
+inline constexpr double kExecutionWeight = 1.0;
+
+enum class ExpertiseMode {
+  Alg2,          // the paper's Alg. 2 exactly (research mode)
+  QualityAware,  // Alg. 2 plus the execution term
+};
+
+// One expert segment's execution by the learner.
+struct SegmentExecution {
+  double reward = 0.0;    // q <= 0
+  int learner_begin = 0;  // the learner's aligned steps [begin, end)
+  int learner_end = 0;
+};
+
+struct ExecutionTrial {
+  ExpertiseTrial trial;                    // what Alg. 2 reads
+  std::vector<SegmentExecution> segments;  // parallel to trial.expert.segments
+};
+
+// NoMistake: a target without any penalty (fewer weak skills than targets: Alg. 3 still drills the skills
+// the expert relies on); its place is the skill's first expert segment.
+enum class TargetReason { Missing, LargeError, NoMistake };
+// "missing", "done with a large error here", "no mistake seen"
+const char* target_reason_words(TargetReason reason);
+
+struct TargetWhy {
+  int skill = 0;
+  TargetReason reason = TargetReason::Missing;
+  int trial = 0;             // index into the trials given
+  int position = 0;          // j (1-based) in that trial's expert sequence
+  double delta = 0.0;        // the penalty (>= 0)
+  int expert_begin = 0, expert_end = 0;    // the expert's segment
+  int learner_begin = 0, learner_end = 0;  // the learner's aligned steps (missing: still the aligned part)
+};
+
+struct ExecutionExpertise {
+  ExpertiseEstimate estimate;  // contributions hold both kinds; an execution one's reward is q
+  std::vector<TargetWhy> why;  // one per estimate.targets entry, in that order
+};
+
+// mode Alg2: estimate_expertise exactly (why from its penalties); QualityAware: the formula above.
+// Throws InputError as estimate_expertise does, and for segments not parallel to the expert's or q > 0.
+ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
+                                                int num_targets, ExpertiseMode mode);
+
+}  // namespace sc

@@ -1,0 +1,24 @@
+#pragma once
+// Dynamic time warping between an expert's trace and a learner's, so that each expert skill segment can be
+// matched with the part of the learner's trial that did the same thing, however much faster, slower or
+// later the learner was (quality-aware expertise, execution_expertise.hpp).
+//
+// Spec: classic DTW, steps (i-1, j), (i, j-1), (i-1, j-1), local cost the Euclidean distance of the points,
+// path from (0, 0) to (n-1, m-1). Ties prefer the diagonal, then the expert's step. O(n m) time and memory.
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace sc {
+
+// A point of a trace in the task's own units (parking: x, y in m and signed speed in m/s; writing: x, y px).
+using TracePoint3 = std::array<double, 3>;
+
+// (expert step, learner step) pairs in order; empty when either trace is empty.
+using StepAlignment = std::vector<std::pair<int, int>>;
+StepAlignment align_traces(const std::vector<TracePoint3>& expert, const std::vector<TracePoint3>& learner);
+
+// The learner's steps aligned with expert steps [begin, end): {first, last + 1}; {0, 0} when none.
+std::pair<int, int> aligned_span(const StepAlignment& path, int begin, int end);
+
+}  // namespace sc

@@ -1,0 +1,84 @@
+#include "teaching/learners/parking/drive_skill_agreement.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "teaching/tasks/parking_steps.hpp"
+
+namespace sc {
+
+std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
+  std::vector<int> out(static_cast<std::size_t>(std::max(length, 0)), -1);
+  for (const SkillSegment& s : segmentation.segments)
+    for (int t = std::max(s.begin, 0); t < s.end && t < length; ++t) out[static_cast<std::size_t>(t)] = s.skill;
+  return out;
+}
+
+StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven,
+                             int driven_length, int shift) {
+  const std::vector<int> a = skill_per_step(clean, clean_length);
+  const std::vector<int> b = skill_per_step(driven, driven_length);
+  StepAgreement out;
+  for (int t = 0; t < clean_length && t + shift < driven_length; ++t) {
+    if (t + shift < 0) continue;
+    ++out.steps;
+    out.agreed += a[static_cast<std::size_t>(t)] == b[static_cast<std::size_t>(t + shift)];
+  }
+  return out;
+}
+
+std::vector<DriveCondition> standard_drive_conditions() {
+  auto profile = [](DriveDevice device, int hz, double noise, double delay) {
+    RealisticDriverProfile p;
+    p.device = device;
+    p.control_hz = hz;
+    p.stick_noise = noise;
+    p.reaction_delay_s = delay;
+    return p;
+  };
+  using D = DriveDevice;
+  return {
+      {"gamepad, no noise, no delay, 15 Hz", profile(D::Gamepad, 15, 0.0, 0.0)},
+      {"gamepad, noise 0.1, no delay, 15 Hz", profile(D::Gamepad, 15, 0.1, 0.0)},
+      {"gamepad, noise 0.1, delay 0.2 s, 15 Hz", profile(D::Gamepad, 15, 0.1, 0.2)},
+      {"gamepad, noise 0.2, delay 0.3 s, 15 Hz", profile(D::Gamepad, 15, 0.2, 0.3)},
+      {"mouse joystick, noise 0.1, delay 0.2 s, 15 Hz", profile(D::MouseJoystick, 15, 0.1, 0.2)},
+      {"keyboard, no noise, no delay, 15 Hz", profile(D::Keyboard, 15, 0.0, 0.0)},
+      {"keyboard, noise 0.1, delay 0.2 s, 15 Hz", profile(D::Keyboard, 15, 0.1, 0.2)},
+      {"gamepad, noise 0.1, delay 0.2 s, 5 Hz", profile(D::Gamepad, 5, 0.1, 0.2)},
+  };
+}
+
+std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
+                                                  const std::vector<ParkingTrial>& expert_drives,
+                                                  const std::vector<DriveCondition>& conditions, std::uint64_t seed) {
+  std::vector<StepSequence> clean;
+  for (const ParkingTrial& t : expert_drives) clean.push_back(parking_step_sequence(t));
+  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean);
+  std::vector<AgreementRow> rows;
+  const Rng root(seed);
+  for (std::size_t c = 0; c < conditions.size(); ++c) {
+    const DriveCondition& condition = conditions[c];
+    const Rng per_condition = root.fork(c);
+    std::vector<StepSequence> driven;
+    AgreementRow row{condition.name, static_cast<int>(expert_drives.size()), {}, 0};
+    for (std::size_t i = 0; i < expert_drives.size(); ++i) {
+      Rng rng = per_condition.fork(i);
+      const ParkingTrial drive = realistic_drive(expert_drives[i], condition.profile, rng);
+      row.successes += drive.success.value_or(false);
+      driven.push_back(parking_step_sequence(drive));
+    }
+    const std::vector<Segmentation> driven_skills = extractor.extract_all(driven);
+    const int shift = static_cast<int>(std::lround(condition.profile.reaction_delay_s * parking::kControlHz));
+    for (std::size_t i = 0; i < driven.size(); ++i) {
+      const StepAgreement a =
+          step_agreement(clean_skills[i], clean[i].length(), driven_skills[i], driven[i].length(), shift);
+      row.agreement.steps += a.steps;
+      row.agreement.agreed += a.agreed;
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+}  // namespace sc

@@ -1,0 +1,49 @@
+#pragma once
+// Robustness of a parking skill model to how people drive: the skills it gives a realistic driver's copy
+// of an expert drive (realistic_driver.hpp) against the skills of the clean drive, step by step.
+//
+// Spec. Agreement of one drive = the share of the clean drive's control steps t whose skill equals the
+// realistic drive's skill at step t + d, d = the driver's reaction delay in control steps (rounded): the
+// driver does at t + d what the expert did at t, so a skill model that follows the motion labels both
+// alike. Steps past the end of either drive do not count (a drive that collided early counts fewer
+// steps). A condition's agreement is step-weighted over its drives.
+#include <string>
+#include <vector>
+
+#include "teaching/learners/parking/realistic_driver.hpp"
+#include "teaching/skills/skill_extractor.hpp"
+
+namespace sc {
+
+// The skill id at each step 0..length-1 (-1 where no segment covers the step).
+std::vector<int> skill_per_step(const Segmentation& segmentation, int length);
+
+struct StepAgreement {
+  int steps = 0;   // compared steps
+  int agreed = 0;  // of them with the same skill
+  double share() const { return steps > 0 ? static_cast<double>(agreed) / steps : 0.0; }
+};
+StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven,
+                             int driven_length, int shift);
+
+struct DriveCondition {
+  std::string name;                 // e.g. "keyboard, noise 0.1, delay 0.2 s, 15 Hz"
+  RealisticDriverProfile profile;
+};
+// The table's rows: 15 Hz input alone, stick noise, delay, each device, a harder novice, 5 Hz input.
+std::vector<DriveCondition> standard_drive_conditions();
+
+struct AgreementRow {
+  std::string condition;
+  int drives = 0;
+  StepAgreement agreement;
+  int successes = 0;  // realistic drives that still parked (how far the noise takes the car off the plan)
+};
+
+// Every condition over every expert drive (control-rate trials); the driver of drive i under condition c
+// uses Rng(seed).fork(c).fork(i). Deterministic.
+std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
+                                                  const std::vector<ParkingTrial>& expert_drives,
+                                                  const std::vector<DriveCondition>& conditions, std::uint64_t seed);
+
+}  // namespace sc

@@ -1,0 +1,74 @@
+#include "teaching/learners/parking/planted_deficit_recovery.hpp"
+
+#include <algorithm>
+
+#include "teaching/tasks/diagnosis.hpp"
+
+namespace sc {
+
+double quiet_expertise_threshold(ExpertiseMode mode) {
+  return mode == ExpertiseMode::Alg2 ? kQuietExpertiseAlg2 : kQuietExpertiseQualityAware;
+}
+
+std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<ParkingSkillMotion>& motions) {
+  std::vector<int> out;
+  for (std::size_t m = 0; m < motions.size(); ++m) {
+    const ParkingSkillMotion& s = motions[m];
+    const bool spoiled = deficit == PlantedDeficit::NeverReversing ? motion_reverses(s)
+                         : deficit == PlantedDeficit::WeakSteering ? s.sharp_fraction >= 0.5
+                         : deficit == PlantedDeficit::LateBraking  ? motion_brakes(s)
+                                                                   : false;
+    if (spoiled) out.push_back(static_cast<int>(m));
+  }
+  return out;
+}
+
+LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
+                                        ExpertiseMode mode, std::uint64_t seed, int learner) {
+  const Rng learner_rng = Rng(seed).fork(static_cast<std::uint64_t>(learner));
+  Rng profile_rng = learner_rng;
+  const DriveDevice device = static_cast<DriveDevice>(learner % 3);
+  RealisticDriverProfile profile = sample_novice_profile(device, profile_rng);
+  profile.deficit = deficit;
+  std::vector<Json> trials;
+  for (std::size_t k = 0; k < pretest.size(); ++k) {
+    const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;
+    Rng drive_rng = learner_rng.fork(1 + k);
+    trials.push_back(parking_trial_to_json(realistic_drive(parse_parking_trial(expert_doc, "expert pool"), profile, drive_rng)));
+  }
+  const Diagnosis d = diagnose_trials(kit, trials, seed, mode);
+  LearnerOutcome out;
+  out.targets = d.expertise.targets;
+  const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
+  for (int m : d.expertise.ranking)
+    out.weakest_per_trial = std::min(out.weakest_per_trial, d.expertise.expertise[static_cast<std::size_t>(m)] / n);
+  out.quiet = out.weakest_per_trial >= quiet_expertise_threshold(mode);
+  const std::vector<int> spoiled = deficit_skills(deficit, kit.skill_motions());
+  auto is_spoiled = [&](int m) { return std::find(spoiled.begin(), spoiled.end(), m) != spoiled.end(); };
+  out.deficit_skills_seen = static_cast<int>(std::count_if(d.expertise.ranking.begin(), d.expertise.ranking.end(), is_spoiled));
+  const int k = std::min({kTopTargets, out.deficit_skills_seen, static_cast<int>(out.targets.size())});
+  out.recovered = k > 0 && std::all_of(out.targets.begin(), out.targets.begin() + k, is_spoiled);
+  return out;
+}
+
+std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const std::vector<int>& pretest, int learners,
+                                               std::uint64_t seed) {
+  std::vector<RecoveryRow> rows;
+  for (PlantedDeficit deficit : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
+                                 PlantedDeficit::LateBraking}) {
+    for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
+      RecoveryRow row{deficit, mode, learners, 0, 0, 0};
+      const std::vector<int> spoiled = deficit_skills(deficit, kit.skill_motions());
+      for (int i = 0; i < learners; ++i) {
+        const LearnerOutcome o = diagnose_planted_learner(kit, pretest, deficit, mode, seed, i);
+        row.recovered += o.recovered;
+        row.quiet += o.quiet;
+        row.top1 += !o.targets.empty() && std::find(spoiled.begin(), spoiled.end(), o.targets.front()) != spoiled.end();
+      }
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+}  // namespace sc

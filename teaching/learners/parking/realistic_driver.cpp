@@ -1,0 +1,163 @@
+#include "teaching/learners/parking/realistic_driver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/error.hpp"
+#include "engine/input/gamepad_mapping.hpp"
+#include "engine/input/keyboard_drive.hpp"
+#include "engine/input/stick_geometry.hpp"
+#include "engine/input/virtual_joystick.hpp"
+
+namespace sc {
+namespace {
+
+constexpr double kMovingSpeed = 0.5;  // m/s, as parking_skill_motion's words
+constexpr double kBraking = 0.15;     // |u0| against the motion
+
+// The stick's slow wander: one AR(1) process per axis, advanced once per input sample.
+class Wander {
+ public:
+  Wander(double sigma, double time_constant_s, int hz)
+      : sigma_(sigma), keep_(time_constant_s > 0.0 ? std::exp(-1.0 / (time_constant_s * hz)) : 0.0) {}
+  input::Vec2 next(Rng& rng) {
+    const double fresh = sigma_ * std::sqrt(1.0 - keep_ * keep_);
+    value_.x = keep_ * value_.x + fresh * rng.normal();
+    value_.y = keep_ * value_.y + fresh * rng.normal();
+    return value_;
+  }
+  void start(Rng& rng) { value_ = {sigma_ * rng.normal(), sigma_ * rng.normal()}; }
+
+ private:
+  double sigma_;
+  double keep_;
+  input::Vec2 value_;
+};
+
+double key_axis(double v) {
+  constexpr double key = input::KeyboardDrive::kKeyAction;
+  return v >= 0.5 * key ? key : (v <= -0.5 * key ? -key : 0.0);
+}
+
+// Intent (u0, u1) plus wander through the device. Wander x is steering, y is throttle (up = forward).
+ParkingAction through_device(DriveDevice device, const ParkingAction& intent, input::Vec2 wander) {
+  if (device == DriveDevice::Keyboard) return {key_axis(intent[0] + wander.y), key_axis(intent[1] + wander.x)};
+  const input::Vec2 aim = input::square_to_disc({std::clamp(intent[1], -1.0, 1.0), std::clamp(intent[0], -1.0, 1.0)});
+  const input::Vec2 stick{aim.x + wander.x, aim.y + wander.y};
+  if (device == DriveDevice::Gamepad) {
+    const input::Vec2 held = input::clamp_to_unit_disc(stick);
+    const input::InputReading r = input::map_gamepad({held.x, -held.y, 0.0, 0.0}, input::GamepadConfig{});
+    return {r.action.accel, r.action.steer};
+  }
+  const input::DriveAction a = input::action_for_knob({stick.x, -stick.y}, {0.0, 0.0}, 1.0);  // screen y down
+  return {a.accel, a.steer};
+}
+
+std::vector<double> expert_speeds(const ParkingTrial& expert) {
+  ParkingSim sim(expert.scenario);
+  std::vector<double> speeds;
+  for (const ParkingAction& u : expert.actions) {
+    speeds.push_back(sim.vehicle().speed);
+    if (!sim.done()) sim.step(u);
+  }
+  return speeds;
+}
+
+void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
+  if (expert.control_hz != parking::kControlHz)
+    throw InputError("realistic driver", "the expert drive must be at the control rate (control_hz 5)");
+  if (p.control_hz != parking::kControlHz && p.control_hz != parking::kSimulationHz)
+    throw InputError("realistic driver", "control_hz must be 5 or 15, got " + std::to_string(p.control_hz));
+  if (!(p.stick_noise >= 0.0) || !(p.reaction_delay_s >= 0.0) || !(p.noise_time_constant_s >= 0.0) ||
+      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s))
+    throw InputError("realistic driver", "noise, time constant and delay must be finite and >= 0");
+}
+
+}  // namespace
+
+std::string device_name(DriveDevice device) {
+  switch (device) {
+    case DriveDevice::Gamepad: return "gamepad";
+    case DriveDevice::MouseJoystick: return "mouse";
+    case DriveDevice::Keyboard: return "keyboard";
+  }
+  return "gamepad";
+}
+
+std::string deficit_name(PlantedDeficit deficit) {
+  switch (deficit) {
+    case PlantedDeficit::None: return "none";
+    case PlantedDeficit::NeverReversing: return "never-reversing";
+    case PlantedDeficit::WeakSteering: return "weak-steering";
+    case PlantedDeficit::LateBraking: return "late-braking";
+  }
+  return "none";
+}
+
+RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng) {
+  RealisticDriverProfile p;
+  p.device = device;
+  p.stick_noise = rng.uniform(0.05, 0.2);
+  p.reaction_delay_s = rng.uniform(0.1, 0.3);
+  return p;
+}
+
+std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
+  const std::vector<double> speeds = expert_speeds(expert);
+  std::vector<bool> out(expert.actions.size(), false);
+  for (std::size_t t = 0; t < out.size(); ++t) {
+    const double u0 = clip_action(expert.actions[t])[0];
+    out[t] = std::abs(speeds[t]) >= kMovingSpeed && u0 * speeds[t] < 0.0 && std::abs(u0) >= kBraking;
+  }
+  return out;
+}
+
+ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& p, Rng& rng) {
+  check(expert, p);
+  const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
+  const int delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));  // input samples
+  const int late = static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz));
+  std::vector<bool> braking = p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
+  const int expert_samples = static_cast<int>(expert.actions.size()) * per_step;
+
+  ParkingTrial out;
+  out.scenario = expert.scenario;
+  out.control_hz = p.control_hz;
+  out.source = "learner";
+  out.device = device_name(p.device);
+  ParkingSim sim(expert.scenario);
+  out.states.push_back(sim.observation());
+  Wander wander(p.stick_noise, p.noise_time_constant_s, p.control_hz);
+  wander.start(rng);
+  int braking_run = 0;  // input samples since the current expert braking run began
+  std::array<ParkingAction, parking::kSubstepsPerAction> sub{};
+  for (int k = 0; k < expert_samples + delay && !sim.done(); k += per_step) {
+    double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
+    for (int s = 0; s < per_step; ++s) {
+      const int source = k + s - delay;  // the expert's input sample the driver is reproducing
+      ParkingAction intent{0.0, 0.0};
+      if (source >= 0 && source < expert_samples) {
+        const std::size_t step = static_cast<std::size_t>(source / per_step);
+        intent = clip_action(expert.actions[step]);
+        braking_run = !braking.empty() && braking[step] ? braking_run + 1 : 0;
+        if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;
+      }
+      ParkingAction u = through_device(p.device, intent, wander.next(rng));
+      if (p.deficit == PlantedDeficit::WeakSteering) u[1] = std::clamp(u[1], -kWeakSteering, kWeakSteering);
+      if (p.deficit == PlantedDeficit::NeverReversing && u[0] < 0.0) {
+        // Brake at most hard enough to stop within this input sample, never below zero speed.
+        u[0] = std::max(u[0], -std::max(speed, 0.0) / (parking::kMaxAcceleration / p.control_hz));
+      }
+      speed += clip_action(u)[0] * parking::kMaxAcceleration / p.control_hz;
+      sub[static_cast<std::size_t>(s)] = u;
+      out.actions.push_back(u);
+    }
+    const ParkingStepResult r = per_step == 1 ? sim.step(sub[0]) : sim.step_substeps(sub);
+    out.states.push_back(sim.observation());
+    out.rewards.push_back(r.reward);
+  }
+  out.success = sim.succeeded();
+  return out;
+}
+
+}  // namespace sc

@@ -1,0 +1,59 @@
+#include "teaching/expertise/execution_expertise.hpp"
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+
+namespace sc {
+namespace {
+
+// Expert: skills 0, 1, 2 in order. The learner shows 0 and 1 (1 badly) and misses 2; reward -0.3.
+ExecutionTrial trial() {
+  ExecutionTrial t;
+  t.trial.expert = {{{0, 0, 10}, {1, 10, 20}, {2, 20, 30}}};
+  t.trial.student = {{{0, 0, 12}, {1, 12, 25}}};
+  t.trial.student_reward = -0.3;
+  t.segments = {{-0.01, 0, 12}, {-0.9, 12, 25}, {-0.2, 25, 30}};
+  return t;
+}
+
+TEST(ExecutionExpertise, Alg2ModeIsAlg2Exactly) {
+  const ExecutionExpertise e = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::Alg2);
+  const ExpertiseEstimate plain = estimate_expertise({trial().trial}, 3, 2);
+  EXPECT_EQ(e.estimate.expertise, plain.expertise);
+  EXPECT_EQ(e.estimate.targets, plain.targets);
+  ASSERT_EQ(e.why.size(), 2u);
+  EXPECT_EQ(e.why[0].skill, 2);
+  EXPECT_EQ(e.why[0].reason, TargetReason::Missing);
+  EXPECT_EQ(e.why[0].position, 3);
+  // Skill 0 and 1 were shown: Alg. 2 has no penalty for the second target.
+  EXPECT_EQ(e.why[1].reason, TargetReason::NoMistake);
+  EXPECT_EQ(e.why[1].delta, 0.0);
+}
+
+TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorOverItsPosition) {
+  const ExecutionExpertise e = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[0], -0.01);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[1], -0.9 / 2);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[2], -0.3 / 3 - 0.2 / 3);
+  // Skill 1 was shown (Alg. 2 never sees it) but done with a large error: now the first target.
+  ASSERT_EQ(e.estimate.targets, (std::vector<int>{1, 2}));
+  EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
+  EXPECT_EQ(e.why[0].expert_begin, 10);
+  EXPECT_EQ(e.why[0].learner_begin, 12);
+  EXPECT_EQ(e.why[0].learner_end, 25);
+  EXPECT_EQ(e.why[1].reason, TargetReason::Missing);
+  EXPECT_STREQ(target_reason_words(e.why[0].reason), "done with a large error here");
+}
+
+TEST(ExecutionExpertise, RefusesScoresNotParallelToTheExpertOrPositive) {
+  ExecutionTrial t = trial();
+  t.segments.pop_back();
+  EXPECT_THROW(estimate_execution_expertise({t}, 3, 2, ExpertiseMode::QualityAware), InputError);
+  t = trial();
+  t.segments[0].reward = 0.1;
+  EXPECT_THROW(estimate_execution_expertise({t}, 3, 2, ExpertiseMode::QualityAware), InputError);
+}
+
+}  // namespace
+}  // namespace sc

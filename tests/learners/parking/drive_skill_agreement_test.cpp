@@ -1,0 +1,41 @@
+#include "teaching/learners/parking/drive_skill_agreement.hpp"
+
+#include <gtest/gtest.h>
+
+namespace sc {
+namespace {
+
+Segmentation segs(std::vector<SkillSegment> s) { return {std::move(s)}; }
+
+TEST(DriveSkillAgreement, SkillPerStepMarksUncoveredStepsWithMinusOne) {
+  EXPECT_EQ(skill_per_step(segs({{2, 0, 2}, {5, 3, 4}}), 5), (std::vector<int>{2, 2, -1, 5, -1}));
+}
+
+TEST(DriveSkillAgreement, ComparesTheDelayedDriveWithTheCleanOne) {
+  const Segmentation clean = segs({{1, 0, 4}, {2, 4, 8}});
+  // The driver is two steps late: the same skills, shifted.
+  const Segmentation late = segs({{1, 0, 6}, {2, 6, 10}});
+  const StepAgreement shifted = step_agreement(clean, 8, late, 10, 2);
+  EXPECT_EQ(shifted.steps, 8);
+  EXPECT_EQ(shifted.agreed, 8);
+  const StepAgreement unshifted = step_agreement(clean, 8, late, 10, 0);
+  EXPECT_EQ(unshifted.agreed, 6);  // steps 4 and 5 differ
+  EXPECT_DOUBLE_EQ(unshifted.share(), 0.75);
+  // A drive that ended early (a collision) only counts the steps it has.
+  EXPECT_EQ(step_agreement(clean, 8, late, 5, 2).steps, 3);
+}
+
+TEST(DriveSkillAgreement, StandardConditionsCoverEveryDeviceAndBothRates) {
+  bool device[3] = {false, false, false}, five_hz = false, fifteen_hz = false;
+  for (const DriveCondition& c : standard_drive_conditions()) {
+    device[static_cast<int>(c.profile.device)] = true;
+    five_hz |= c.profile.control_hz == 5;
+    fifteen_hz |= c.profile.control_hz == 15;
+    EXPECT_FALSE(c.name.empty());
+  }
+  EXPECT_TRUE(device[0] && device[1] && device[2]);
+  EXPECT_TRUE(five_hz && fifteen_hz);
+}
+
+}  // namespace
+}  // namespace sc

@@ -1,0 +1,80 @@
+// Planted deficits in realistic drivers, diagnosed with the shipped parking model (the full table:
+// `skillcoach evaluate-diagnosis --task parking`, docs/skills.md). A handful of learners keeps this cheap.
+#include "teaching/learners/parking/planted_deficit_recovery.hpp"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/asset_paths.hpp"
+#include "teaching/scenarios/diverse_scenario_selection.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/tasks/expert_demos.hpp"
+
+namespace sc {
+namespace {
+
+TEST(PlantedDeficitRecovery, DeficitSkillsAreTheSkillsWhoseWordsNameWhatTheDeficitSpoils) {
+  std::vector<ParkingSkillMotion> motions(4);
+  for (auto& m : motions) m.steps = 10;
+  motions[0].mean_speed = -3.0;  // "reversing ..."
+  motions[1].mean_speed = 2.0;
+  motions[1].sharp_fraction = 0.6;
+  motions[2].mean_speed = 4.0;  // "driving forward ..., braking"
+  motions[2].mean_acceleration = -0.5;
+  motions[3].steps = 0;  // unused
+  motions[3].mean_speed = -3.0;
+  EXPECT_EQ(deficit_skills(PlantedDeficit::NeverReversing, motions), (std::vector<int>{0}));
+  EXPECT_EQ(deficit_skills(PlantedDeficit::WeakSteering, motions), (std::vector<int>{1}));
+  EXPECT_EQ(deficit_skills(PlantedDeficit::LateBraking, motions), (std::vector<int>{2}));
+  EXPECT_TRUE(deficit_skills(PlantedDeficit::None, motions).empty());
+}
+
+const std::filesystem::path kShipped = asset_dir() / "models" / "parking.pt";
+
+struct Setup {
+  std::unique_ptr<ParkingKit> kit;
+  std::vector<int> pretest;
+};
+
+const Setup& setup() {
+  static const Setup s = [] {
+    Setup out;
+    auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
+    out.kit = std::make_unique<ParkingKit>(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}});
+    out.pretest = select_diverse_scenarios(demo_skills(out.kit->expert_pool()), 5).scenarios();
+    return out;
+  }();
+  return s;
+}
+
+// Seed 3: neither the seed the thresholds were chosen on (1) nor the table's (2).
+constexpr std::uint64_t kSeed = 3;
+constexpr int kLearners = 6;
+
+// What holds at every seed measured (docs/skills.md): the first target of a noisy learner who never
+// reverses is a reversing skill, and such learners look weaker than noise-only ones. (Filling all of the
+// top 3 targets and keeping every noise-only learner above the threshold do not hold; see the docs.)
+TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersAreFirstDrilledOnReversingAndWeakerThanNoiseOnlyOnes) {
+  ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
+  for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
+    const std::vector<int> reversing = deficit_skills(PlantedDeficit::NeverReversing, setup().kit->skill_motions());
+    int first_reverses = 0;
+    double planted = 0.0, noise_only = 0.0;
+    for (int i = 0; i < kLearners; ++i) {
+      const LearnerOutcome o =
+          diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::NeverReversing, mode, kSeed, i);
+      ASSERT_FALSE(o.targets.empty());
+      first_reverses += std::find(reversing.begin(), reversing.end(), o.targets.front()) != reversing.end();
+      planted += o.weakest_per_trial;
+      noise_only +=
+          diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, mode, kSeed, i).weakest_per_trial;
+    }
+    EXPECT_GE(first_reverses, kLearners - 1) << "mode " << static_cast<int>(mode);
+    EXPECT_LT(planted, noise_only) << "mode " << static_cast<int>(mode);
+  }
+}
+
+}  // namespace
+}  // namespace sc

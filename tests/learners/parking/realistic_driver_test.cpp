@@ -1,0 +1,147 @@
+#include "teaching/learners/parking/realistic_driver.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
+#include "teaching/tasks/parking_steps.hpp"
+
+namespace sc {
+namespace {
+
+// A hand-made drive: forward with a left turn, a hard stop, then reversing with right lock.
+ParkingTrial expert_drive() {
+  ParkingTrial t;
+  t.scenario = parking_pool_scenario(0, 0);
+  for (int i = 0; i < 8; ++i) t.actions.push_back({0.8, -0.3});
+  for (int i = 0; i < 4; ++i) t.actions.push_back({-0.9, 0.0});
+  for (int i = 0; i < 8; ++i) t.actions.push_back({-0.6, 0.9});
+  t.source = "expert";
+  return t;
+}
+
+RealisticDriverProfile clean(DriveDevice device, int hz) {
+  RealisticDriverProfile p;
+  p.device = device;
+  p.control_hz = hz;
+  p.stick_noise = 0.0;
+  p.reaction_delay_s = 0.0;
+  return p;
+}
+
+double speed_of(const ParkingObservation& o) { return vehicle_from_observation(o).speed; }
+
+TEST(RealisticDriver, SameSeedSameDriveOtherSeedAnotherDrive) {
+  RealisticDriverProfile p;
+  Rng a(7), b(7), c(8);
+  const ParkingTrial x = realistic_drive(expert_drive(), p, a);
+  EXPECT_EQ(parking_trial_to_json(x), parking_trial_to_json(realistic_drive(expert_drive(), p, b)));
+  EXPECT_NE(x.actions, realistic_drive(expert_drive(), p, c).actions);
+  EXPECT_EQ(x.device, "gamepad");
+  EXPECT_EQ(x.source, "learner");
+}
+
+TEST(RealisticDriver, MouseWithoutNoiseOrDelayAtTheControlRateRepeatsTheExpert) {
+  Rng rng(1);
+  const ParkingTrial e = expert_drive();
+  const ParkingTrial d = realistic_drive(e, clean(DriveDevice::MouseJoystick, 5), rng);
+  ASSERT_EQ(d.actions.size(), e.actions.size());
+  for (std::size_t t = 0; t < e.actions.size(); ++t) {
+    EXPECT_NEAR(d.actions[t][0], e.actions[t][0], 1e-9) << t;
+    EXPECT_NEAR(d.actions[t][1], e.actions[t][1], 1e-9) << t;
+  }
+}
+
+TEST(RealisticDriver, GamepadDeadZoneSilencesSmallIntents) {
+  ParkingTrial e = expert_drive();
+  e.actions.assign(5, {0.05, -0.05});  // inside the stick's 0.12 dead zone
+  Rng rng(1);
+  for (const ParkingAction& u : realistic_drive(e, clean(DriveDevice::Gamepad, 5), rng).actions) {
+    EXPECT_EQ(u[0], 0.0);
+    EXPECT_EQ(u[1], 0.0);
+  }
+}
+
+TEST(RealisticDriver, KeyboardGivesOnlyKeyActionsAt15Hz) {
+  RealisticDriverProfile p = clean(DriveDevice::Keyboard, 15);
+  p.stick_noise = 0.2;
+  Rng rng(3);
+  const ParkingTrial d = realistic_drive(expert_drive(), p, rng);
+  EXPECT_EQ(d.control_hz, 15);
+  ASSERT_FALSE(d.rewards.empty());
+  EXPECT_EQ(d.actions.size(), 3 * d.rewards.size());
+  EXPECT_EQ(d.states.size(), d.rewards.size() + 1);
+  int held = 0;
+  for (const ParkingAction& u : d.actions)
+    for (double v : u) {
+      EXPECT_TRUE(v == 0.0 || std::abs(std::abs(v) - 0.7) < 1e-12) << v;
+      held += v != 0.0;
+    }
+  EXPECT_GT(held, 0);
+}
+
+TEST(RealisticDriver, ReactionDelayShiftsTheExpertsActions) {
+  RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 5);
+  p.reaction_delay_s = 0.4;  // two control steps
+  Rng rng(1);
+  const ParkingTrial e = expert_drive();
+  const ParkingTrial d = realistic_drive(e, p, rng);
+  ASSERT_EQ(d.actions.size(), e.actions.size() + 2);
+  EXPECT_EQ(d.actions[0], (ParkingAction{0.0, 0.0}));
+  EXPECT_EQ(d.actions[1], (ParkingAction{0.0, 0.0}));
+  for (std::size_t t = 2; t < d.actions.size(); ++t) EXPECT_NEAR(d.actions[t][0], e.actions[t - 2][0], 1e-9) << t;
+}
+
+TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
+  const ParkingTrial e = expert_drive();
+  RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 15);
+  p.stick_noise = 0.1;
+  p.deficit = PlantedDeficit::NeverReversing;
+  Rng r1(2);
+  for (const ParkingObservation& o : realistic_drive(e, p, r1).states) EXPECT_GE(speed_of(o), -1e-9);
+  p.deficit = PlantedDeficit::WeakSteering;
+  Rng r2(2);
+  for (const ParkingAction& u : realistic_drive(e, p, r2).actions) EXPECT_LE(std::abs(u[1]), kWeakSteering);
+  // Late braking: the expert's braking run starts at step 8 (u0 -0.9 against forward motion); the driver
+  // coasts through its first kLateBrakingSeconds (3 control steps) and brakes from the 4th.
+  const std::vector<bool> braking = expert_braking_steps(e);
+  ASSERT_TRUE(braking[8]);
+  EXPECT_FALSE(braking[7]);
+  RealisticDriverProfile late = clean(DriveDevice::MouseJoystick, 5);
+  late.deficit = PlantedDeficit::LateBraking;
+  Rng r3(2);
+  const ParkingTrial d = realistic_drive(e, late, r3);
+  for (std::size_t t = 8; t < 11; ++t) EXPECT_EQ(d.actions[t][0], 0.0) << t;
+  EXPECT_NEAR(d.actions[11][0], -0.9, 1e-9);
+}
+
+TEST(RealisticDriver, RefusesAnExpertAtTheSimulationRateAndBadProfiles) {
+  ParkingTrial e = expert_drive();
+  Rng rng(1);
+  RealisticDriverProfile p;
+  p.control_hz = 7;
+  EXPECT_THROW(realistic_drive(e, p, rng), InputError);
+  p = {};
+  p.stick_noise = -0.1;
+  EXPECT_THROW(realistic_drive(e, p, rng), InputError);
+  e.control_hz = 15;
+  EXPECT_THROW(realistic_drive(e, {}, rng), InputError);
+}
+
+TEST(RealisticDriver, NoviceProfilesStayInTheirDocumentedRanges) {
+  Rng rng(5);
+  for (int i = 0; i < 50; ++i) {
+    const RealisticDriverProfile p = sample_novice_profile(DriveDevice::Keyboard, rng);
+    EXPECT_EQ(p.device, DriveDevice::Keyboard);
+    EXPECT_EQ(p.control_hz, 15);
+    EXPECT_GE(p.stick_noise, 0.05);
+    EXPECT_LT(p.stick_noise, 0.2);
+    EXPECT_GE(p.reaction_delay_s, 0.1);
+    EXPECT_LT(p.reaction_delay_s, 0.3);
+  }
+}
+
+}  // namespace
+}  // namespace sc
