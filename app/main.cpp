@@ -17,11 +17,13 @@ int main(int argc, char** argv) {
   // write, losing the trial being stored; ignored, the write fails with EFBIG like a full disk, and the
   // learner store keeps the trial pending and says so.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{"SkillCoach - learn to park a car and to write Balinese characters with individualized drills.\n"
-               "Run without arguments to open the trainer; use a subcommand for headless work."};
+  CLI::App app{
+      "SkillCoach - learn to park a car and to write Balinese characters with individualized drills.\n"
+      "Run without arguments to open the trainer; use a subcommand for headless work."};
   app.require_subcommand(0, 1);
-  app.footer("Examples:\n  skillcoach                       open the trainer window\n"
-             "  skillcoach <command> --help      options and an example for one command");
+  app.footer(
+      "Examples:\n  skillcoach                       open the trainer window\n"
+      "  skillcoach <command> --help      options and an example for one command");
   sc::GuiOptions gui;
   app.add_option("--data-dir", gui.data_dir, "Where learner records are kept (default: XDG data directory)");
   app.add_option("--script", gui.script,

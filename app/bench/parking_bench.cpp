@@ -26,7 +26,8 @@ void run_sim_steps(benchmark::State& state, sc::LotVariant variant) {
     ++t;
   }
   state.SetItemsProcessed(state.iterations());
-  state.counters["steps_per_s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 void BM_ParkingSimStepClassic(benchmark::State& state) { run_sim_steps(state, sc::LotVariant::Classic); }

@@ -32,11 +32,14 @@ std::string realistic_trajectory(int steps) {
                       std::round(0.01 * t * 1e3) / 1e3, std::round(std::cos(t) * 1e3) / 1e3});
     rewards.push_back(std::round(-0.05 * t * 1e4) / 1e4);
   }
-  sc::Json doc = {{"task", "parking"},
-                  {"scenario", {{"heading0", 0.7}, {"goal", {{"x", 3.0}, {"y", -2.0}, {"heading", 1.57}}},
-                                {"variant", "classic"}}},
-                  {"actions", actions}, {"states", states}, {"rewards", rewards}, {"success", true},
-                  {"source", "learner"}};
+  sc::Json doc = {
+      {"task", "parking"},
+      {"scenario", {{"heading0", 0.7}, {"goal", {{"x", 3.0}, {"y", -2.0}, {"heading", 1.57}}}, {"variant", "classic"}}},
+      {"actions", actions},
+      {"states", states},
+      {"rewards", rewards},
+      {"success", true},
+      {"source", "learner"}};
   return doc.dump();
 }
 

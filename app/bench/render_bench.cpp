@@ -71,7 +71,8 @@ void draw_lot_scene(sc::Renderer2D& r, const std::vector<sc::Vec2f>& trail, cons
     const float x = -27.0f + 3.6f * static_cast<float>(k % 15);
     const float y = k < 15 ? -12.0f : 12.0f;
     r.outline_rect({{x, y}, {1.4f, 2.6f}, 0}, sc::Stroke::pixels(2), sc::Color::hex(0xe8e8e8));
-    if (k % 2 == 0 && k != 4) r.fill_rect({{x, y}, {1.0f, 2.2f}, 0.02f * static_cast<float>(k)}, sc::Color::hex(0x8a8f99));
+    if (k % 2 == 0 && k != 4)
+      r.fill_rect({{x, y}, {1.0f, 2.2f}, 0.02f * static_cast<float>(k)}, sc::Color::hex(0x8a8f99));
   }
   r.polyline(trail, sc::Stroke::pixels(3), sc::Color::hex(0xf2c94c));
   r.ghost_ribbon(ghost, sc::Stroke::world(2.0f), sc::Color::hex(0x2f80ed, 0.35f));
@@ -105,6 +106,9 @@ void BM_Renderer2DLotScene(benchmark::State& state) {
   state.counters["draw_calls"] = renderer.last_frame_stats().draw_calls;
   state.counters["vertices"] = renderer.last_frame_stats().vertices;
 }
-BENCHMARK(BM_Renderer2DLotScene)->Name("render/renderer2d_lot_scene_1280x720")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Renderer2DLotScene)
+    ->Name("render/renderer2d_lot_scene_1280x720")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

@@ -37,9 +37,15 @@ void time_training(benchmark::State& state, const sc::CompileConfig& base, const
 // batch per iteration, as in the reference measurement.
 void BM_CompileParkingTrainingIteration(benchmark::State& state) {
   const int max_t = static_cast<int>(state.range(0));
-  time_training(state, sc::CompileConfig::parking_defaults(), steps_of(sc::parking_like_sequences(50, 11, max_t, 1)), 11);
+  time_training(state, sc::CompileConfig::parking_defaults(), steps_of(sc::parking_like_sequences(50, 11, max_t, 1)),
+                11);
 }
-BENCHMARK(BM_CompileParkingTrainingIteration)->Arg(29)->Arg(57)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_CompileParkingTrainingIteration)
+    ->Arg(29)
+    ->Arg(57)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 // Writing config (latent 24, K 8, action mode, 5-px resampling): one batch of 50 words of ~1000-2700 1-px
 // steps (the reference: 415 s for one such batch).

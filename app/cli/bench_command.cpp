@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "app/core/bench_report.hpp"
 #include "app/cli/command_registry.hpp"
+#include "app/core/bench_report.hpp"
 #include "engine/core/error.hpp"
 
 namespace sc::cli {
@@ -119,8 +119,9 @@ int run_bench(const BenchOptions& o) {
 CommandRunner setup(CLI::App& sub) {
   auto options = std::make_shared<BenchOptions>();
   sub.add_flag("--quick", options->quick, "3 short repetitions per benchmark instead of 5 of at least 0.5 s");
-  auto* out = sub.add_option("--out", options->out, "Markdown report to write (default: docs/benchmarks.md of the "
-                                                     "source tree this program was built from)");
+  auto* out = sub.add_option("--out", options->out,
+                             "Markdown report to write (default: docs/benchmarks.md of the "
+                             "source tree this program was built from)");
   sub.add_option("--filter", options->filter, "Only benchmarks whose name matches this regular expression");
   return [options, out] {
     options->out_given = out->count() > 0;

@@ -16,8 +16,8 @@ CommandRunner setup(CLI::App& sub) {
   return [out] { return run_headless_demo(out->empty() ? default_demo_path() : std::filesystem::path(*out)); };
 }
 
-const CommandRegistration kReg{{"demo", "Render the headless demo screenshot and print its path",
-                                "skillcoach demo --out demo.png", setup}};
+const CommandRegistration kReg{
+    {"demo", "Render the headless demo screenshot and print its path", "skillcoach demo --out demo.png", setup}};
 
 }  // namespace
 }  // namespace sc::cli

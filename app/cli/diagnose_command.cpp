@@ -13,11 +13,11 @@
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/parking/parking_trial.hpp"
-#include "engine/writing/writing_trial.hpp"
 #include "engine/parking_view/parking_path.hpp"
 #include "engine/parking_view/parking_trial_image.hpp"
 #include "engine/render/gl_context.hpp"
 #include "engine/render/rgba_image.hpp"
+#include "engine/writing/writing_trial.hpp"
 #include "engine/writing_view/writing_trial_image.hpp"
 #include "teaching/tasks/diagnosis.hpp"
 #include "teaching/tasks/parking_kit.hpp"
@@ -116,7 +116,8 @@ int run(const DiagnoseArgs& args) {
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<DiagnoseArgs>();
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
-  sub.add_option("--model", args->model, "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
+  sub.add_option("--model", args->model,
+                 "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
   sub.add_option("--seed", args->seed, "Seed of the drills' random expert segments (default 0)");
   sub.add_option("--expertise", args->expertise,
                  "alg2: the paper's Alg. 2 (skills missing from the learner's trials); quality-aware: Alg. 2 plus "

@@ -64,29 +64,34 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const std::vector<int> pretest = select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios();
-  std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives\n", kit->extractor().name().c_str(),
-              args.learners, args.seed, pretest.size());
+  std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives\n",
+              kit->extractor().name().c_str(), args.learners, args.seed, pretest.size());
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
-    std::printf("  %s skills: %s\n", deficit_name(d).c_str(), skill_list(deficit_skills(d, kit->skill_motions())).c_str());
+    std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
+                skill_list(deficit_skills(d, kit->skill_motions())).c_str());
   std::printf("quiet thresholds (expertise per pre-test trial): Alg. 2 %.3f, quality-aware %.3f\n\n",
               kQuietExpertiseAlg2, kQuietExpertiseQualityAware);
   if (args.details) {
     for (int m = 0; m < kit->extractor().num_skills(); ++m) {
       const ParkingSkillMotion& s = kit->skill_motions()[static_cast<std::size_t>(m)];
-      std::printf("  skill %2d: %-64s %4d steps, speed %5.2f m/s, reversing %3.0f %%, sharp %3.0f %%, braking %3.0f %%\n", m,
-                  kit->describe_skill(m).c_str(), s.steps, s.mean_speed, 100 * s.reverse_fraction, 100 * s.sharp_fraction,
-                  100 * s.braking_fraction);
+      std::printf(
+          "  skill %2d: %-64s %4d steps, speed %5.2f m/s, reversing %3.0f %%, sharp %3.0f %%, braking %3.0f %%\n", m,
+          kit->describe_skill(m).c_str(), s.steps, s.mean_speed, 100 * s.reverse_fraction, 100 * s.sharp_fraction,
+          100 * s.braking_fraction);
     }
     print_details(*kit, pretest, args);
     return 0;
   }
-  std::printf("| planted deficit | expertise | deficit skills fill the top targets | first target a deficit skill | no skill below the threshold |\n");
+  std::printf(
+      "| planted deficit | expertise | deficit skills fill the top targets | first target a deficit skill | no skill "
+      "below the threshold |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const RecoveryRow& r : planted_deficit_table(*kit, pretest, args.learners, args.seed)) {
     const bool planted = r.deficit != PlantedDeficit::None;
     auto share = [&](int n) { return std::to_string(n) + " / " + std::to_string(r.learners); };
     std::printf("| %s | %s | %s | %s | %s |\n", deficit_name(r.deficit).c_str(), mode_name(r.mode),
-                planted ? share(r.recovered).c_str() : "-", planted ? share(r.top1).c_str() : "-", share(r.quiet).c_str());
+                planted ? share(r.recovered).c_str() : "-", planted ? share(r.top1).c_str() : "-",
+                share(r.quiet).c_str());
     std::fflush(stdout);
   }
   return 0;
@@ -96,16 +101,23 @@ CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<EvaluateDiagnosisArgs>();
   sub.add_option("--task", args->task, "parking (writing: not measured by this command)")->required();
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt)");
-  sub.add_option("--learners", args->learners, "Learners per deficit and mode")->capture_default_str()->check(CLI::Range(1, 1000));
-  sub.add_option("--pretest", args->pretest, "Pre-test drives (diverse pool scenarios)")->capture_default_str()->check(CLI::Range(1, 100));
-  sub.add_option("--seed", args->seed, "Seed of the learners (1 was used to choose the thresholds)")->capture_default_str();
-  sub.add_flag("--details", args->details, "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
+  sub.add_option("--learners", args->learners, "Learners per deficit and mode")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  sub.add_option("--pretest", args->pretest, "Pre-test drives (diverse pool scenarios)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  sub.add_option("--seed", args->seed, "Seed of the learners (1 was used to choose the thresholds)")
+      ->capture_default_str();
+  sub.add_flag("--details", args->details,
+               "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"evaluate-diagnosis",
-                                "Planted-weakness recovery of the diagnosis on realistic (noisy, delayed, per-device) learners",
-                                "skillcoach evaluate-diagnosis --task parking --learners 20 --seed 2", setup}};
+const CommandRegistration kReg{
+    {"evaluate-diagnosis",
+     "Planted-weakness recovery of the diagnosis on realistic (noisy, delayed, per-device) learners",
+     "skillcoach evaluate-diagnosis --task parking --learners 20 --seed 2", setup}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -22,8 +22,8 @@
 #include "engine/core/error.hpp"
 #include "engine/writing/step_data.hpp"
 #include "engine/writing/word_generator.hpp"
-#include "teaching/skills/compile_config.hpp"
 #include "teaching/learners/parking/drive_skill_agreement.hpp"
+#include "teaching/skills/compile_config.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
@@ -93,7 +93,8 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
 }
 
 std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& args) {
-  if (args.time_heuristic) return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
+  if (args.time_heuristic)
+    return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
   return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, args.task));
 }
 
@@ -104,12 +105,15 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
   std::fprintf(stderr, "evaluate-skills: %d classic words (seed %llu) by realistic learners...\n", args.count,
                static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<WritingRobustnessRow> rows = measure_writing_robustness(
-      *extractor, ClassicDrawerGlyphs::load(), writing::classic_words(args.count, seed), seed, writing_robustness_conditions());
+  const std::vector<WritingRobustnessRow> rows =
+      measure_writing_robustness(*extractor, ClassicDrawerGlyphs::load(), writing::classic_words(args.count, seed),
+                                 seed, writing_robustness_conditions());
   std::printf("%s, %d words of seed %llu per condition (learner seeds Rng(%llu).fork(word)):\n\n%s",
               args.time_heuristic ? "time heuristic" : args.model.c_str(), args.count,
-              static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed), robustness_table(rows).c_str());
-  std::fprintf(stderr, "evaluate-skills: %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+              static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed),
+              robustness_table(rows).c_str());
+  std::fprintf(stderr, "evaluate-skills: %.1f s\n",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;
 }
 
@@ -120,10 +124,12 @@ int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
   std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
                args.learners, args.learners, static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
-  const PlantedWeaknessReport report = measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed);
+  const PlantedWeaknessReport report =
+      measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed);
   std::printf("%s, %d learners per letter, seed %llu:\n%s", args.time_heuristic ? "time heuristic" : args.model.c_str(),
               args.learners, static_cast<unsigned long long>(seed), planted_weakness_table(report).c_str());
-  std::fprintf(stderr, "evaluate-skills: %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  std::fprintf(stderr, "evaluate-skills: %.1f s\n",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;
 }
 
@@ -184,8 +190,11 @@ CommandRunner setup(CLI::App& sub) {
                                  "defaults) instead of a model: the yardstick for a model's figures");
   model->excludes(heuristic);
   heuristic->excludes(model);
-  sub.add_option("--count", args->count, "Demonstrations to generate")->capture_default_str()->check(CLI::Range(1, 100000));
-  sub.add_option("--seed", args->seed, "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
+  sub.add_option("--count", args->count, "Demonstrations to generate")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  sub.add_option("--seed", args->seed,
+                 "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
   sub.add_flag("--realistic-drivers", args->realistic_drivers,
                "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
                "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
@@ -194,18 +203,20 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_flag("--robustness", args->robustness,
                "Writing: print the robustness table instead (boundary F1 and letter->skill agreement on --count words "
                "written by realistic learners: mouse sampling, wobble, unseen drawers; docs/skills.md \"Robustness\")");
-  auto* planted = sub.add_flag("--planted-weaknesses", args->planted,
-               "Writing: print the planted-weakness table instead (Alg. 2 on the app's pre-test written by learners who "
-               "write one letter badly and the rest with realistic noise; docs/skills.md \"Robustness\")");
+  auto* planted = sub.add_flag(
+      "--planted-weaknesses", args->planted,
+      "Writing: print the planted-weakness table instead (Alg. 2 on the app's pre-test written by learners who "
+      "write one letter badly and the rest with realistic noise; docs/skills.md \"Robustness\")");
   sub.add_option("--learners", args->learners, "Learners per letter (and noise-only learners) for --planted-weaknesses")
-      ->capture_default_str()->check(CLI::Range(1, 1000));
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   planted->excludes(sub.get_option("--robustness"));
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"evaluate-skills", "Measure a CompILE model's (or the time heuristic's) segmentation quality on fresh expert data",
-                                "skillcoach evaluate-skills --task writing --model assets/models/writing.pt --count 200",
-                                setup}};
+const CommandRegistration kReg{
+    {"evaluate-skills", "Measure a CompILE model's (or the time heuristic's) segmentation quality on fresh expert data",
+     "skillcoach evaluate-skills --task writing --model assets/models/writing.pt --count 200", setup}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -13,8 +13,8 @@ ExperimentProgress progress_printer() {
   return [tty, start](std::string_view phase, int done, int total) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (tty)
-      std::fprintf(stderr, "\r\033[K[%6.1f s] %.*s %d/%d%s", seconds, static_cast<int>(phase.size()), phase.data(), done,
-                   total, done == total ? "\n" : "");
+      std::fprintf(stderr, "\r\033[K[%6.1f s] %.*s %d/%d%s", seconds, static_cast<int>(phase.size()), phase.data(),
+                   done, total, done == total ? "\n" : "");
     else if (done == total)
       std::fprintf(stderr, "[%6.1f s] %.*s done\n", seconds, static_cast<int>(phase.size()), phase.data());
   };

@@ -44,9 +44,10 @@ ParkingScenario read_scenario(const std::string& file) {
 }
 
 void print_plan_summary(const ParkingPlan& plan) {
-  std::printf("{\"success\":%s,\"success_step\":%d,\"steps\":%zu,\"return\":%.6f,\"collision\":%s,\"planning_ms\":%.2f}\n",
-              plan.success ? "true" : "false", plan.success_step, plan.actions.size(), plan.total_return(),
-              plan.collision ? "true" : "false", plan.planning_ms);
+  std::printf(
+      "{\"success\":%s,\"success_step\":%d,\"steps\":%zu,\"return\":%.6f,\"collision\":%s,\"planning_ms\":%.2f}\n",
+      plan.success ? "true" : "false", plan.success_step, plan.actions.size(), plan.total_return(),
+      plan.collision ? "true" : "false", plan.planning_ms);
 }
 
 int run_one(const ExpertArgs& args) {
@@ -102,10 +103,12 @@ int run_many(const ExpertArgs& args) {
 
 int run_writing(const ExpertArgs& args) {
   if (args.count < 1) throw InputError("--count", "must be at least 1");
-  if (args.out_dir.empty()) throw InputError("--out", "the writing expert needs a directory to write its gold trials to");
+  if (args.out_dir.empty())
+    throw InputError("--out", "the writing expert needs a directory to write its gold trials to");
   std::filesystem::create_directories(args.out_dir);
   const std::vector<std::string> words = writing::classic_words(args.count, args.seed);
-  const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
+  const writing::GlyphSet glyphs =
+      writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
   std::size_t points = 0;
   for (int i = 0; i < args.count; ++i) {
     const std::string& word = words[static_cast<std::size_t>(i)];
@@ -129,7 +132,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--count", args->count, "Number of random scenarios (default 100)");
   sub.add_option("--seed", args->seed, "Seed of the scenario sampler (default 0)");
   sub.add_option("--variant", args->variant, "Lot variant: classic (the paper's empty lot) or parked");
-  sub.add_option("--reverse-in", args->reverse_in, "Probability of a reverse-in goal (default 0)")->check(CLI::Range(0.0, 1.0));
+  sub.add_option("--reverse-in", args->reverse_in, "Probability of a reverse-in goal (default 0)")
+      ->check(CLI::Range(0.0, 1.0));
   sub.add_option("--out", args->out_dir, "Directory to write one trial file per scenario (source \"expert\")");
   sub.add_option("--scenario", args->scenario_file, "Plan one scenario from a trial file or a bare scenario object");
   return [args] {
@@ -142,8 +146,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"expert", "Plan parking scenarios with the expert and summarise them, or write writing gold trials",
-                                "skillcoach expert --task parking --count 1000 --seed 1 --variant parked", setup}};
+const CommandRegistration kReg{
+    {"expert", "Plan parking scenarios with the expert and summarise them, or write writing gold trials",
+     "skillcoach expert --task parking --count 1000 --seed 1 --variant parked", setup}};
 
 }  // namespace
 }  // namespace sc::cli

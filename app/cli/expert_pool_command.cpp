@@ -33,13 +33,14 @@ int run(const PoolArgs& args) {
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<ParkingTrial> trials = generate_parking_pool(options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const std::filesystem::path out = args.out.empty() ? default_parking_pool_file(options.region) : std::filesystem::path(args.out);
+  const std::filesystem::path out =
+      args.out.empty() ? default_parking_pool_file(options.region) : std::filesystem::path(args.out);
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   write_json_file(out, parking_pool_json(options, trials), 0);
   int parked = 0;
   for (const ParkingTrial& t : trials) parked += t.success.value_or(false);
-  std::printf("%s: %d expert trials (seed %llu, %s), %d parked, planned in %.1f s\n", out.string().c_str(),
-              args.count, args.seed, args.region.c_str(), parked, seconds);
+  std::printf("%s: %d expert trials (seed %llu, %s), %d parked, planned in %.1f s\n", out.string().c_str(), args.count,
+              args.seed, args.region.c_str(), parked, seconds);
   return parked == args.count ? 0 : 1;
 }
 

@@ -13,12 +13,11 @@
 
 #include "app/cli/command_registry.hpp"
 #include "app/cli/task_option.hpp"
-#include "app/cli/task_option.hpp"
 #include "app/core/learn_scripted_learner.hpp"
-#include "teaching/tasks/task_kit_factory.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
 #include "teaching/sessions/training_session.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 
 namespace sc::cli {
 namespace {
@@ -100,8 +99,9 @@ SessionSettings new_settings(const LearnOptions& o, const records::LearnerStore&
   settings.weak_skills = o.weak_skills;
   settings.drills_per_weak_skill = o.drills_per_weak_skill;
   if (o.task == TaskKind::parking)
-    settings.goal_region = o.lot == "auto" ? first_session_goal_region(store.session_count(o.learner, to_string(TaskKind::parking)))
-                                           : parse_goal_region(o.lot, "--lot");
+    settings.goal_region = o.lot == "auto"
+                               ? first_session_goal_region(store.session_count(o.learner, to_string(TaskKind::parking)))
+                               : parse_goal_region(o.lot, "--lot");
   return settings;
 }
 
@@ -112,7 +112,8 @@ std::string lot_words(const SessionSettings& settings) {
 }
 
 int run(const LearnOptions& o) {
-  if (o.task == TaskKind::writing && o.lot != "auto") throw InputError("--lot", "is a parking setting (writing has no lot)");
+  if (o.task == TaskKind::writing && o.lot != "auto")
+    throw InputError("--lot", "is a parking setting (writing has no lot)");
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
   const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
@@ -123,12 +124,13 @@ int run(const LearnOptions& o) {
   if (point) {
     session = TrainingSession::resume(*kit, store, *point, records::utc_timestamp_now);
     std::printf("resumed session %lld%s at round %d, %s, item %d\n", static_cast<long long>(session->session_id()),
-                lot_words(session->settings()).c_str(), session->round(), std::string(records::to_string(session->phase())).c_str(),
-                session->item_index());
+                lot_words(session->settings()).c_str(), session->round(),
+                std::string(records::to_string(session->phase())).c_str(), session->item_index());
     if (session->phase() != SessionPhase::Pretest && session->phase() != SessionPhase::Diagnosis) print_plan(*session);
   } else {
     session = std::make_unique<TrainingSession>(*kit, store, settings, records::utc_timestamp_now);
-    std::printf("started session %lld%s\n", static_cast<long long>(session->session_id()), lot_words(session->settings()).c_str());
+    std::printf("started session %lld%s\n", static_cast<long long>(session->session_id()),
+                lot_words(session->settings()).c_str());
   }
   std::fflush(stdout);
   ScriptedRunHooks hooks;

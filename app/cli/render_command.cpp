@@ -1,5 +1,6 @@
 // skillcoach render: a trial file as a PNG, offscreen (SKILLCOACH_GL=osmesa|egl picks the backend).
-// Parking (--size default 1280x720; writing uses the same option): the lot, the path re-simulated from the trial's actions, the car at its final state, and with
+// Parking (--size default 1280x720; writing uses the same option): the lot, the path re-simulated from the trial's
+// actions, the car at its final state, and with
 // --overlay expert the expert's plan for the same scenario as a ghost ribbon.
 #include <CLI/CLI.hpp>
 
@@ -70,7 +71,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--size", args->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   return [args] {
     const auto [width, height] = parse_size(args->size, "--size");
-    return args->task == TaskKind::writing ? render_writing(*args, width, height) : render_parking(*args, width, height);
+    return args->task == TaskKind::writing ? render_writing(*args, width, height)
+                                           : render_parking(*args, width, height);
   };
 }
 

@@ -24,13 +24,15 @@ int replay_parking(const std::string& file) {
   const ParkingTrial trial = read_parking_trial(file);
   const ParkingReplay replay = replay_parking_trial(trial);
   for (const auto& s : replay.steps) {
-    std::printf("{\"t\":%d,\"x\":%.6f,\"y\":%.6f,\"heading\":%.6f,\"speed\":%.6f,\"reward\":%.6f,\"success\":%s}\n", s.t,
-                s.vehicle.x, s.vehicle.y, s.vehicle.heading, s.vehicle.speed, s.reward, s.success ? "true" : "false");
+    std::printf("{\"t\":%d,\"x\":%.6f,\"y\":%.6f,\"heading\":%.6f,\"speed\":%.6f,\"reward\":%.6f,\"success\":%s}\n",
+                s.t, s.vehicle.x, s.vehicle.y, s.vehicle.heading, s.vehicle.speed, s.reward,
+                s.success ? "true" : "false");
   }
-  std::printf("{\"summary\":true,\"steps\":%zu,\"return\":%.6f,\"success_step\":%s,\"collision\":%s,\"ignored_actions\":%d}\n",
-              replay.steps.size(), replay.total_return,
-              replay.success_step > 0 ? std::to_string(replay.success_step).c_str() : "null",
-              replay.collision ? "true" : "false", replay.ignored_actions);
+  std::printf(
+      "{\"summary\":true,\"steps\":%zu,\"return\":%.6f,\"success_step\":%s,\"collision\":%s,\"ignored_actions\":%d}\n",
+      replay.steps.size(), replay.total_return,
+      replay.success_step > 0 ? std::to_string(replay.success_step).c_str() : "null",
+      replay.collision ? "true" : "false", replay.ignored_actions);
   return 0;
 }
 

@@ -31,7 +31,8 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--out", options->out, "Folder to write the report into (created)")->required();
   return [options, session] {
     ReportRequest request;
-    request.data_dir = options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
+    request.data_dir =
+        options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
     request.learner = options->learner;
     if (session->count() > 0) request.session = options->session;
     request.out = options->out;

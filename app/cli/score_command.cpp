@@ -40,7 +40,8 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return score_writing_file(args->file); };
 }
 
-const CommandRegistration kReg{{"score", "Score a trial file against the expert and print the score and its parts (JSON)",
+const CommandRegistration kReg{{"score",
+                                "Score a trial file against the expert and print the score and its parts (JSON)",
                                 "skillcoach score --task writing trial.json", setup}};
 
 }  // namespace

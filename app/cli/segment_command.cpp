@@ -12,8 +12,8 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
-#include "app/cli/task_option.hpp"
 #include "app/cli/segment_image.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/gui/offscreen_screenshot.hpp"
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
@@ -92,8 +92,8 @@ int run(const SegmentArgs& args) {
     for (const auto& warning : writing_trial->warnings)  // e.g. a trace capped at its point limit
       std::fprintf(stderr, "skillcoach: warning: %s\n", warning.c_str());
     points = writing::infill_trace(writing_trial->trace()).points;
-    steps = writing_step_sequence(writing::trace_step_data(points, writing_trial->scenario.alphabet,
-                                                           writing_trial->scenario.word));
+    steps = writing_step_sequence(
+        writing::trace_step_data(points, writing_trial->scenario.alphabet, writing_trial->scenario.word));
   }
   if (steps.length() == 0) throw InputError(args.trial, "trial has no steps to segment");
   Segmentation segmentation;
@@ -111,10 +111,13 @@ int run(const SegmentArgs& args) {
   out["model"] = chosen.model.empty() ? Json(nullptr) : Json(chosen.model);
   if (!args.png.empty()) {
     const auto [width, height] = parse_size(args.size, "--size");
-    const std::string caption = std::filesystem::path(args.trial).filename().string() + "  \xc2\xb7  " +
-                                (chosen.model.empty() ? "time heuristic" : "CompILE " + std::filesystem::path(chosen.model).filename().string());
-    write_png(args.png, parking ? render_parking_segments(*parking, segmentation, caption, width, height)
-                                : render_writing_segments(*writing_trial, points, segmentation, caption, width, height));
+    const std::string caption =
+        std::filesystem::path(args.trial).filename().string() + "  \xc2\xb7  " +
+        (chosen.model.empty() ? "time heuristic"
+                              : "CompILE " + std::filesystem::path(chosen.model).filename().string());
+    write_png(args.png, parking
+                            ? render_parking_segments(*parking, segmentation, caption, width, height)
+                            : render_writing_segments(*writing_trial, points, segmentation, caption, width, height));
     out["png"] = args.png;
   }
   std::printf("%s\n", out.dump(1).c_str());
@@ -124,7 +127,8 @@ int run(const SegmentArgs& args) {
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<SegmentArgs>();
   add_task_option(sub, args->task)->required();
-  sub.add_option("--model", args->model, "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
+  sub.add_option("--model", args->model,
+                 "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
   sub.add_option("--png", args->png, "Also draw the segments into this PNG");
   sub.add_option("--size", args->size, "PNG size WIDTHxHEIGHT")->capture_default_str();
   sub.add_option("trial", args->trial, "Trial file (JSON)")->required();

@@ -37,7 +37,8 @@ void draw_legend(const ImGuiLayer& imgui, const std::string& caption, const Segm
   for (std::size_t i = 0; i < segmentation.segments.size(); ++i) {
     const SkillSegment& seg = segmentation.segments[i];
     const float y = origin.y + line * static_cast<float>(i + 1);
-    dl->AddRectFilled({origin.x, y + 3 * s}, {origin.x + 22 * s, y + line - 6 * s}, imgui_color(colors.of(seg.skill)), 3 * s);
+    dl->AddRectFilled({origin.x, y + 3 * s}, {origin.x + 22 * s, y + line - 6 * s}, imgui_color(colors.of(seg.skill)),
+                      3 * s);
     const std::string text = "skill " + std::to_string(seg.skill) + ": steps " + std::to_string(seg.begin) + "-" +
                              std::to_string(seg.end - 1);
     dl->AddText({origin.x + 30 * s, y}, IM_COL32(235, 238, 242, 255), text.c_str());

@@ -4,11 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "app/core/skill_colors.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "engine/render/draw_types.hpp"
 #include "engine/render/rgba_image.hpp"
 #include "engine/writing/writing_trial.hpp"
-#include "app/core/skill_colors.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
 namespace sc::cli {

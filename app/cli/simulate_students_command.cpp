@@ -11,14 +11,14 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
-#include "app/cli/task_option.hpp"
 #include "app/cli/experiment_progress.hpp"
 #include "app/cli/simulate_writing_students.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/render/bar_chart_image.hpp"
 #include "engine/render/line_chart_image.hpp"
-#include "teaching/students/student_report.hpp"
 #include "teaching/students/expert_drives.hpp"
+#include "teaching/students/student_report.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 
@@ -31,10 +31,10 @@ struct SimulateArgs {
   std::string model;
   int pairs = 0;
   double rehearsal = 0.0;
-  int finetune_epochs = 0;       // 0: the config's
-  double finetune_lr = 0.0;      // 0: the config's
-  int student_drives = 0;        // 0: the config's
-  double reverse_keep = -1.0;    // < 0: the recipe's (0.2, the paper)
+  int finetune_epochs = 0;     // 0: the config's
+  double finetune_lr = 0.0;    // 0: the config's
+  int student_drives = 0;      // 0: the config's
+  double reverse_keep = -1.0;  // < 0: the recipe's (0.2, the paper)
   bool study_corner = false;
   bool no_curve = false;
   bool quick = false;
@@ -79,8 +79,9 @@ BarChartFigure chart_of(const StudentExperimentResult& result) {
   group(result.reference);
   for (const StudentResult& s : result.students) group(s);
   figure.panels = {std::move(reward), std::move(success)};
-  figure.notes.push_back("skills: " + result.extractor + (result.extractor_notice.empty() ? "" : " (" + result.extractor_notice + ")") +
-                         "; seed " + std::to_string(result.config.seed) + "; " + std::to_string(result.config.scenarios_per_set) +
+  figure.notes.push_back("skills: " + result.extractor +
+                         (result.extractor_notice.empty() ? "" : " (" + result.extractor_notice + ")") + "; seed " +
+                         std::to_string(result.config.seed) + "; " + std::to_string(result.config.scenarios_per_set) +
                          " fresh scenarios per set; fine-tuned " + std::to_string(result.config.finetune_epochs) +
                          " epochs on equal-size data");
   return figure;
@@ -105,21 +106,25 @@ LineChartFigure curve_chart_of(const StudentExperimentResult& result) {
     success.y.push_back(100.0 * p.score.success_rate);
   }
   const Color expert = Color::hex(0x3a8f5c);
-  figure.panels = {{"episode reward (last step), mean of " + std::to_string(result.config.curve.rollouts) + " rollouts", "%.3f",
-                    {reward}, {{"expert planner", expert, curve.expert.mean_reward}}},
-                   {"success rate (%)", "%.0f", {success}, {{"expert planner", expert, 100.0 * curve.expert.success_rate}}}};
-  figure.notes.push_back("seed " + std::to_string(result.config.seed) + "; drills: " + std::to_string(curve.drill_pairs) +
-                         " pairs (" + std::to_string(curve.reverse_pairs) + " reversing)" +
-                         (curve.rehearsal_pairs > 0 ? " + " + std::to_string(curve.rehearsal_pairs) + " of its own pairs" : "") +
-                         "; lr " + format_g(result.config.finetune_learning_rate) + "; goals: " +
-                         std::string(to_string(result.config.region)));
+  figure.panels = {
+      {"episode reward (last step), mean of " + std::to_string(result.config.curve.rollouts) + " rollouts",
+       "%.3f",
+       {reward},
+       {{"expert planner", expert, curve.expert.mean_reward}}},
+      {"success rate (%)", "%.0f", {success}, {{"expert planner", expert, 100.0 * curve.expert.success_rate}}}};
+  figure.notes.push_back(
+      "seed " + std::to_string(result.config.seed) + "; drills: " + std::to_string(curve.drill_pairs) + " pairs (" +
+      std::to_string(curve.reverse_pairs) + " reversing)" +
+      (curve.rehearsal_pairs > 0 ? " + " + std::to_string(curve.rehearsal_pairs) + " of its own pairs" : "") + "; lr " +
+      format_g(result.config.finetune_learning_rate) + "; goals: " + std::string(to_string(result.config.region)));
   return figure;
 }
 
 // The kit whose pool supplies diagnosis scenarios and drills: the shipped pool of the whole lot or of the
 // study corner.
 std::unique_ptr<TaskKit> experiment_kit(const SimulateArgs& args) {
-  return make_task_kit(TaskKind::parking, args.model, args.study_corner ? GoalRegion::StudyCorner : GoalRegion::WholeLot);
+  return make_task_kit(TaskKind::parking, args.model,
+                       args.study_corner ? GoalRegion::StudyCorner : GoalRegion::WholeLot);
 }
 
 StudentExperimentConfig config_of(const SimulateArgs& args) {
@@ -132,7 +137,8 @@ StudentExperimentConfig config_of(const SimulateArgs& args) {
   if (args.student_drives > 0) config.student_drives = args.student_drives;
   if (args.study_corner) config.region = GoalRegion::StudyCorner;
   for (SyntheticStudentRecipe& r : config.students)
-    if (r.kind == SyntheticStudentKind::ReversingDifficulty && args.reverse_keep >= 0) r.reverse_keep_fraction = args.reverse_keep;
+    if (r.kind == SyntheticStudentKind::ReversingDifficulty && args.reverse_keep >= 0)
+      r.reverse_keep_fraction = args.reverse_keep;
   config.learning_curve = !args.no_curve;
   return config;
 }
@@ -177,25 +183,30 @@ int run(const SimulateArgs& args) {
 CommandRunner setup(CLI::App& sub) {
   auto args = std::make_shared<SimulateArgs>();
   sub.add_option("--seed", args->seed, "Seed of students, scenarios and fine-tuning data (default 0)")
-      ->check(CLI::Validator([](std::string& v) { return v.starts_with('-') ? std::string("must not be negative") : ""; },
-                             "SEED >= 0"));
+      ->check(CLI::Validator(
+          [](std::string& v) { return v.starts_with('-') ? std::string("must not be negative") : ""; }, "SEED >= 0"));
   sub.add_option("--out-dir", args->out_dir, "Where students.json and students.png go (default simulate-students)");
-  sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt, else the time heuristic)");
-  sub.add_option("--pairs", args->pairs, "Fine-tuning pairs per condition (default 0: one round of Ind. Drills per set)")
+  sub.add_option("--model", args->model,
+                 "CompILE model file (default: assets/models/parking.pt, else the time heuristic)");
+  sub.add_option("--pairs", args->pairs,
+                 "Fine-tuning pairs per condition (default 0: one round of Ind. Drills per set)")
       ->check(CLI::NonNegativeNumber);
-  sub.add_option("--rehearsal", args->rehearsal,
-                 "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
+  sub.add_option(
+         "--rehearsal", args->rehearsal,
+         "Ours: add this many times the condition's pairs of the student's own training pairs (default 0: the paper)")
       ->check(CLI::Range(0.0, 100.0));
   add_task_option(sub, args->task, "parking (default) or writing");
-  sub.add_option("--finetune-epochs", args->finetune_epochs, "Fine-tuning epochs (default: parking 100, the paper; writing 10)")
+  sub.add_option("--finetune-epochs", args->finetune_epochs,
+                 "Fine-tuning epochs (default: parking 100, the paper; writing 10)")
       ->check(CLI::Range(1, 100000));
   sub.add_option("--finetune-lr", args->finetune_lr, "Fine-tuning learning rate (default 5e-4, the students' own)")
       ->check(CLI::Range(1e-7, 1.0));
   sub.add_option("--student-drives", args->student_drives,
                  "Expert drives the students are cloned on, apart from the teaching pool (default 600)")
       ->check(CLI::Range(1, 100000));
-  sub.add_option("--reverse-keep", args->reverse_keep,
-                 "Share of the reverse-acceleration pairs the reversing-difficulty student keeps (default 0.2, the paper)")
+  sub.add_option(
+         "--reverse-keep", args->reverse_keep,
+         "Share of the reverse-acceleration pairs the reversing-difficulty student keeps (default 0.2, the paper)")
       ->check(CLI::Range(0.0, 1.0));
   sub.add_flag("--study-corner", args->study_corner,
                "The paper's study subset: pool and evaluation goals in the bottom-right corner (spots 12-14)");

@@ -75,7 +75,8 @@ int run_writing_students(const WritingSimulateArgs& args) {
   const auto* writing_kit = dynamic_cast<const WritingKit*>(kit.get());
   if (writing_kit == nullptr) throw InputError("simulate-students", "the writing task did not give a writing kit");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
-  const WritingStudentExperimentResult result = run_writing_student_experiment(*writing_kit, config, progress_printer());
+  const WritingStudentExperimentResult result =
+      run_writing_student_experiment(*writing_kit, config, progress_printer());
   std::printf("%s", writing_experiment_table(result, *writing_kit).c_str());
 
   const std::filesystem::path dir(args.out_dir);

@@ -15,10 +15,10 @@ struct WritingSimulateArgs {
   int pairs = 0;
   double rehearsal = 0.0;
   bool quick = false;
-  int finetune_epochs = 0;          // 0: the experiment's default
+  int finetune_epochs = 0;              // 0: the experiment's default
   double finetune_learning_rate = 0.0;  // 0: the experiment's default
-  int words_per_set = 0;            // 0: the experiment's default
-  int targets = 0;                  // 0: the experiment's default
+  int words_per_set = 0;                // 0: the experiment's default
+  int targets = 0;                      // 0: the experiment's default
 };
 
 // The writing-only options (ignored with --task parking); --finetune-epochs and --finetune-lr are shared

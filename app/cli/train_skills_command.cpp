@@ -80,7 +80,7 @@ int run(const TrainArgs& args) {
   std::fprintf(stderr, "%s: %s demonstrations...\n", args.task.c_str(), args.data.empty() ? "generating" : "reading");
   if (args.augment > 0 && (args.task != "writing" || !args.data.empty()))
     throw InputError("--augment", "only for generated writing words (--task writing without --data)");
-  const SkillDataSet data = args.augment > 0 ? generate_augmented_writing_demos(args.demos, args.augment, args.seed)
+  const SkillDataSet data = args.augment > 0    ? generate_augmented_writing_demos(args.demos, args.augment, args.seed)
                             : args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed)
                                                 : read_task_demos(args.task, args.data);
   const DataSplit split = split_demos(data, kValidFraction, args.seed);
@@ -91,7 +91,8 @@ int run(const TrainArgs& args) {
   if (args.fix_boundaries) {
     for (const SkillDemo& demo : data.demos)
       if (demo.true_boundaries.empty())
-        throw InputError("--fix-boundaries", "demonstration " + demo.label + " has no known boundaries (only generated writing words have them)");
+        throw InputError("--fix-boundaries", "demonstration " + demo.label +
+                                                 " has no known boundaries (only generated writing words have them)");
     trainer.fix_boundaries(split.train_boundaries, split.valid_boundaries);
   }
   if (!split.train_warm_boundaries.empty()) trainer.warm_start_at(split.train_warm_boundaries);
@@ -102,7 +103,8 @@ int run(const TrainArgs& args) {
 
   ModelProvenance provenance;
   provenance.data_description = data.description + "; " + std::to_string(split.train.size()) + " train / " +
-                                std::to_string(split.valid.size()) + " validation (seed " + std::to_string(args.seed) + ")";
+                                std::to_string(split.valid.size()) + " validation (seed " + std::to_string(args.seed) +
+                                ")";
   if (args.fix_boundaries) provenance.data_description += "; DIAGNOSTIC: boundaries fixed at the true symbol edges";
   provenance.git_revision = git_revision();
   provenance.metrics = summary.to_json();
@@ -123,11 +125,13 @@ CommandRunner setup(CLI::App& sub) {
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
   sub.add_option("--data", args->data, "Folder of trial files to train on (default: generate expert demonstrations)");
   sub.add_option("--demos", args->demos, "Demonstrations to generate when no --data is given")
-      ->capture_default_str()->check(CLI::Range(2, 100000));
+      ->capture_default_str()
+      ->check(CLI::Range(2, 100000));
   sub.add_option("--iterations", args->iterations, "Maximum passes over the training data (default: the task's)")
       ->check(CLI::Range(0, 1000000));
   sub.add_option("--seed", args->seed, "Seed of the generated data, the split and the training")->capture_default_str();
-  sub.add_option("--set", args->overrides, "Override a model setting of the task's defaults, e.g. --set prior_rate=10 "
+  sub.add_option("--set", args->overrides,
+                 "Override a model setting of the task's defaults, e.g. --set prior_rate=10 "
                  "(keys as in the model's JSON sidecar; repeatable)");
   sub.add_flag("--fix-boundaries", args->fix_boundaries,
                "Diagnostic (generated writing words): fix every boundary at the true symbol edges and train only the "
@@ -143,7 +147,8 @@ CommandRunner setup(CLI::App& sub) {
 }
 
 const CommandRegistration kReg{{"train-skills", "Train a task's CompILE skill model on expert demonstrations",
-                                "skillcoach train-skills --task writing --seed 0 --out assets/models/writing.pt", setup}};
+                                "skillcoach train-skills --task writing --seed 0 --out assets/models/writing.pt",
+                                setup}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -28,7 +28,7 @@ struct SampleSummary {
 SampleSummary summarize(std::vector<double> values);
 
 struct MachineInfo {
-  std::string cpu_model;     // /proc/cpuinfo "model name"
+  std::string cpu_model;  // /proc/cpuinfo "model name"
   int logical_cpus = 0;
   double memory_gib = 0;     // /proc/meminfo MemTotal
   std::string os;            // /etc/os-release PRETTY_NAME and the kernel release
@@ -40,10 +40,10 @@ MachineInfo probe_machine();
 
 struct BenchReport {
   MachineInfo machine;
-  std::string command;    // the exact command line that produced the report
-  std::string date_utc;   // "2024-05-01 10:00 UTC"
-  std::string settings;   // e.g. "5 repetitions, min time 0.5 s per repetition"
-  std::string load_after; // /proc/loadavg after the run
+  std::string command;     // the exact command line that produced the report
+  std::string date_utc;    // "2024-05-01 10:00 UTC"
+  std::string settings;    // e.g. "5 repetitions, min time 0.5 s per repetition"
+  std::string load_after;  // /proc/loadavg after the run
   std::vector<BenchmarkSamples> results;
 };
 

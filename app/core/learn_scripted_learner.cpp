@@ -70,8 +70,8 @@ void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
       case SessionPhase::Pretest:
       case SessionPhase::Evaluation: {
         const bool pre = s.phase() == SessionPhase::Pretest;
-        const Json attempt =
-            scripted_attempt(s.test_expert_trial(), pre ? 0.6 : 0.85, attempt_seed(s, pre ? 0 : 3, s.item_index()), device);
+        const Json attempt = scripted_attempt(s.test_expert_trial(), pre ? 0.6 : 0.85,
+                                              attempt_seed(s, pre ? 0 : 3, s.item_index()), device);
         const SubmittedTrial kept = s.submit_test_trial(attempt, {});
         if (hooks.after_trial) hooks.after_trial(s, pre ? "pretest" : "eval", kept);
         break;
@@ -91,7 +91,8 @@ void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
         if (hooks.after_trial) hooks.after_trial(s, "practice", kept);
         break;
       }
-      case SessionPhase::Summary: break;
+      case SessionPhase::Summary:
+        break;
     }
   }
 }

@@ -4,10 +4,14 @@ namespace sc {
 
 std::string describe(const DeviceChoice& device) {
   switch (device.kind) {
-    case DeviceKind::gamepad: return "Gamepad: " + device.gamepad_name;
-    case DeviceKind::mouse_joystick: return "Mouse joystick";
-    case DeviceKind::keyboard: return "Keyboard";
-    case DeviceKind::mouse_pen: return "Mouse or trackpad";
+    case DeviceKind::gamepad:
+      return "Gamepad: " + device.gamepad_name;
+    case DeviceKind::mouse_joystick:
+      return "Mouse joystick";
+    case DeviceKind::keyboard:
+      return "Keyboard";
+    case DeviceKind::mouse_pen:
+      return "Mouse or trackpad";
   }
   return "unknown device";
 }

@@ -39,10 +39,10 @@ struct FrameInput {
   std::array<bool, SDL_NUM_SCANCODES> keys_down{};
   std::array<bool, SDL_NUM_SCANCODES> keys_pressed{};
   std::vector<GamepadSnapshot> gamepads;  // connected game controllers, in connection order
-  bool ui_wants_mouse = false;     // ImGui is using the mouse (hovering a window): scene input should ignore it
-  bool ui_wants_keyboard = false;  // ImGui has keyboard focus (text field)
-  std::vector<MouseEvent> mouse_events;  // motion/button events since the previous frame, in order
-  double time_seconds = 0;               // when this frame was polled, on the clock of mouse_events (0 headless)
+  bool ui_wants_mouse = false;            // ImGui is using the mouse (hovering a window): scene input should ignore it
+  bool ui_wants_keyboard = false;         // ImGui has keyboard focus (text field)
+  std::vector<MouseEvent> mouse_events;   // motion/button events since the previous frame, in order
+  double time_seconds = 0;                // when this frame was polled, on the clock of mouse_events (0 headless)
 
   // The same input with every "pressed/released" edge cleared: given to the 2nd and later simulation steps
   // of a frame so an edge acts once.

@@ -11,9 +11,9 @@
 #include <string>
 
 #include "app/gui/headless_demo.hpp"
-#include "app/gui/screen_host.hpp"
 #include "app/gui/input_script.hpp"
 #include "app/gui/input_source.hpp"
+#include "app/gui/screen_host.hpp"
 #include "app/gui/scripted_input.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/sdl_window_context.hpp"
@@ -92,7 +92,8 @@ int run_and_quit(std::unique_ptr<SdlWindowContext> window, const GuiOptions& opt
 // chose a driver with SDL_VIDEODRIVER. Failing to open a window is an error here, not a demo.
 int run_script(const GuiOptions& options) {
   InputScript script = read_input_script(options.script);
-  if (!has_display_variable() && std::getenv("SDL_VIDEODRIVER") == nullptr) SDL_SetHint(SDL_HINT_VIDEODRIVER, "offscreen");
+  if (!has_display_variable() && std::getenv("SDL_VIDEODRIVER") == nullptr)
+    SDL_SetHint(SDL_HINT_VIDEODRIVER, "offscreen");
   if (SDL_Init(SDL_INIT_VIDEO | SDL_INIT_EVENTS) != 0)
     throw std::runtime_error(std::string("SDL cannot start video for the script: ") + SDL_GetError());
   std::unique_ptr<SdlWindowContext> window;

@@ -26,15 +26,24 @@ struct ActionName {
 };
 
 constexpr std::array<ActionName, 18> kActions{{
-    {"wait_frames", ScriptAction::wait_frames},   {"until_screen", ScriptAction::until_screen},
-    {"expect_screen", ScriptAction::expect_screen}, {"key", ScriptAction::key},
-    {"key_down", ScriptAction::key_down},         {"key_up", ScriptAction::key_up},
-    {"text", ScriptAction::text},                 {"mouse_move", ScriptAction::mouse_move},
-    {"mouse_down", ScriptAction::mouse_down},     {"mouse_up", ScriptAction::mouse_up},
-    {"click", ScriptAction::click},               {"drag", ScriptAction::drag},
-    {"wheel", ScriptAction::wheel},               {"gamepad_connect", ScriptAction::gamepad_connect},
-    {"gamepad_disconnect", ScriptAction::gamepad_disconnect}, {"gamepad_axis", ScriptAction::gamepad_axis},
-    {"gamepad_button", ScriptAction::gamepad_button}, {"screenshot", ScriptAction::screenshot},
+    {"wait_frames", ScriptAction::wait_frames},
+    {"until_screen", ScriptAction::until_screen},
+    {"expect_screen", ScriptAction::expect_screen},
+    {"key", ScriptAction::key},
+    {"key_down", ScriptAction::key_down},
+    {"key_up", ScriptAction::key_up},
+    {"text", ScriptAction::text},
+    {"mouse_move", ScriptAction::mouse_move},
+    {"mouse_down", ScriptAction::mouse_down},
+    {"mouse_up", ScriptAction::mouse_up},
+    {"click", ScriptAction::click},
+    {"drag", ScriptAction::drag},
+    {"wheel", ScriptAction::wheel},
+    {"gamepad_connect", ScriptAction::gamepad_connect},
+    {"gamepad_disconnect", ScriptAction::gamepad_disconnect},
+    {"gamepad_axis", ScriptAction::gamepad_axis},
+    {"gamepad_button", ScriptAction::gamepad_button},
+    {"screenshot", ScriptAction::screenshot},
 }};
 
 // Members that qualify an action rather than being one.
@@ -65,7 +74,8 @@ Vec2f point_of(const JsonView& v) {
 
 SDL_Scancode key_of(const JsonView& v) {
   const SDL_Scancode key = SDL_GetScancodeFromName(v.string().c_str());
-  if (key == SDL_SCANCODE_UNKNOWN) v.fail("unknown key name (SDL scancode names: \"Return\", \"Up\", \"Escape\", \"A\")");
+  if (key == SDL_SCANCODE_UNKNOWN)
+    v.fail("unknown key name (SDL scancode names: \"Return\", \"Up\", \"Escape\", \"A\")");
   return key;
 }
 
@@ -120,7 +130,9 @@ class ScriptReader {
 
   static void read_argument(ScriptStep& s, const JsonView& step, const JsonView& arg) {
     switch (s.action) {
-      case ScriptAction::wait_frames: s.frames = frames_of(arg); break;
+      case ScriptAction::wait_frames:
+        s.frames = frames_of(arg);
+        break;
       case ScriptAction::until_screen:
         s.name = arg.string();
         s.frames = step.find("max_frames") ? frames_of(step.at("max_frames")) : 600;
@@ -128,19 +140,36 @@ class ScriptReader {
       case ScriptAction::expect_screen:
       case ScriptAction::text:
       case ScriptAction::gamepad_connect:
-      case ScriptAction::screenshot: s.name = arg.string(); break;
+      case ScriptAction::screenshot:
+        s.name = arg.string();
+        break;
       case ScriptAction::key:
       case ScriptAction::key_down:
-      case ScriptAction::key_up: s.key = key_of(arg); break;
+      case ScriptAction::key_up:
+        s.key = key_of(arg);
+        break;
       case ScriptAction::mouse_move:
-      case ScriptAction::click: s.points = {point_of(arg)}; break;
+      case ScriptAction::click:
+        s.points = {point_of(arg)};
+        break;
       case ScriptAction::mouse_down:
-      case ScriptAction::mouse_up: s.button = mouse_button_of(arg); break;
-      case ScriptAction::drag: read_drag(s, step, arg); break;
-      case ScriptAction::wheel: s.value = static_cast<float>(arg.number_in(-100, 100)); break;
-      case ScriptAction::gamepad_disconnect: break;
-      case ScriptAction::gamepad_axis: read_gamepad_axis(s, step, arg); break;
-      case ScriptAction::gamepad_button: read_gamepad_button(s, step, arg); break;
+      case ScriptAction::mouse_up:
+        s.button = mouse_button_of(arg);
+        break;
+      case ScriptAction::drag:
+        read_drag(s, step, arg);
+        break;
+      case ScriptAction::wheel:
+        s.value = static_cast<float>(arg.number_in(-100, 100));
+        break;
+      case ScriptAction::gamepad_disconnect:
+        break;
+      case ScriptAction::gamepad_axis:
+        read_gamepad_axis(s, step, arg);
+        break;
+      case ScriptAction::gamepad_button:
+        read_gamepad_button(s, step, arg);
+        break;
     }
     if (s.action == ScriptAction::text && s.name.empty()) arg.fail("expected some text");
     if (s.action == ScriptAction::screenshot && s.name.empty()) arg.fail("expected a PNG file name");

@@ -22,24 +22,24 @@
 namespace sc {
 
 enum class ScriptAction {
-  wait_frames,      // frames
-  until_screen,     // name; fails after max frames
-  expect_screen,    // name; fails if another screen shows
-  key,              // key down now, up the next frame
+  wait_frames,    // frames
+  until_screen,   // name; fails after max frames
+  expect_screen,  // name; fails if another screen shows
+  key,            // key down now, up the next frame
   key_down,
   key_up,
-  text,             // typed text (SDL text input)
-  mouse_move,       // points[0]
-  mouse_down,       // button
+  text,        // typed text (SDL text input)
+  mouse_move,  // points[0]
+  mouse_down,  // button
   mouse_up,
   click,            // move to points[0], button down now, up the next frame
   drag,             // left button down along points over `frames`, then up
   wheel,            // value
   gamepad_connect,  // name
   gamepad_disconnect,
-  gamepad_axis,     // axis, value
-  gamepad_button,   // button, down
-  screenshot,       // name = PNG path (relative to the working directory)
+  gamepad_axis,    // axis, value
+  gamepad_button,  // button, down
+  screenshot,      // name = PNG path (relative to the working directory)
 };
 
 struct ScriptStep {
@@ -48,8 +48,8 @@ struct ScriptStep {
   int frames = 0;
   std::string name;
   SDL_Scancode key = SDL_SCANCODE_UNKNOWN;
-  int button = 0;     // mouse: 0 left, 1 right, 2 middle; gamepad: SDL_GameControllerButton
-  int axis = 0;       // SDL_GameControllerAxis
+  int button = 0;  // mouse: 0 left, 1 right, 2 middle; gamepad: SDL_GameControllerButton
+  int axis = 0;    // SDL_GameControllerAxis
   float value = 0;
   bool down = false;
   std::vector<Vec2f> points;

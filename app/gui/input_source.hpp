@@ -16,8 +16,8 @@ namespace sc {
 
 // What the loop shows the source after a frame was drawn (before it is presented).
 struct DrawnFrame {
-  const std::string& screen;                 // the navigator's current screen (after this frame's change)
-  std::function<RgbaImage()> read_pixels;    // the frame just drawn
+  const std::string& screen;               // the navigator's current screen (after this frame's change)
+  std::function<RgbaImage()> read_pixels;  // the frame just drawn
 };
 
 class InputSource {

@@ -29,8 +29,7 @@ RgbaImage render_screen_offscreen(const ScreenshotRequest& request) {
 std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
   const auto x = text.find('x');
   int w = 0, h = 0;
-  const bool ok = x != std::string::npos &&
-                  std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
+  const bool ok = x != std::string::npos && std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
                   std::from_chars(text.data() + x + 1, text.data() + text.size(), h).ptr == text.data() + text.size();
   if (!ok || w < 64 || h < 64 || w > 8192 || h > 8192)
     throw InputError(option + " " + text, "expected WIDTHxHEIGHT with each side in 64..8192, e.g. 1280x720");

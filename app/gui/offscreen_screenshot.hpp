@@ -14,7 +14,7 @@ struct ScreenshotRequest {
   std::string screen = "start";
   int width = 1280;
   int height = 720;
-  int frames = 3;  // clamped to >= 2
+  int frames = 3;                     // clamped to >= 2
   TaskKind task = TaskKind::parking;  // the task the trainer's screens show
 };
 

@@ -27,8 +27,8 @@ class Navigator;
 struct UiContext {
   Renderer2D& renderer;
   const UiFonts& fonts;
-  float ui_scale;           // 1 at 720 px tall, 3 at 4K: multiply hand-picked pixel sizes by it
-  int width;                // framebuffer pixels
+  float ui_scale;  // 1 at 720 px tall, 3 at 4K: multiply hand-picked pixel sizes by it
+  int width;       // framebuffer pixels
   int height;
   double alpha;             // interpolation between the previous and current simulation state, [0, 1)
   double time_seconds;      // simulation time since the screen was entered

@@ -14,7 +14,7 @@ namespace sc {
 namespace {
 
 constexpr int kMotionEventsPerFrame = 8;  // a drag's mouse samples per frame: a pen needs more than one
-constexpr int kFirstGamepadId = 1000;  // above any real instance id of a short test run
+constexpr int kFirstGamepadId = 1000;     // above any real instance id of a short test run
 
 float distance(Vec2f a, Vec2f b) { return std::hypot(b.x - a.x, b.y - a.y); }
 
@@ -31,9 +31,7 @@ Vec2f along(const std::vector<Vec2f>& path, double fraction) {
   return path.back();
 }
 
-Uint8 sdl_button(int index) {
-  return index == 0 ? SDL_BUTTON_LEFT : index == 1 ? SDL_BUTTON_RIGHT : SDL_BUTTON_MIDDLE;
-}
+Uint8 sdl_button(int index) { return index == 0 ? SDL_BUTTON_LEFT : index == 1 ? SDL_BUTTON_RIGHT : SDL_BUTTON_MIDDLE; }
 
 // Where a UTF-8 character starting at `i` ends.
 std::size_t next_character(const std::string& text, std::size_t i) {
@@ -73,7 +71,9 @@ bool ScriptedInput::waiting() {
 
 void ScriptedInput::run(const ScriptStep& step, const Deliver& deliver) {
   switch (step.action) {
-    case ScriptAction::wait_frames: resume_frame_ = frame_ + step.frames; break;
+    case ScriptAction::wait_frames:
+      resume_frame_ = frame_ + step.frames;
+      break;
     case ScriptAction::until_screen:
       until_ = static_cast<std::size_t>(&step - script_.steps.data());
       until_started_ = frame_;
@@ -86,12 +86,24 @@ void ScriptedInput::run(const ScriptStep& step, const Deliver& deliver) {
       release_key_ = step.key;
       resume_frame_ = frame_ + 2;  // down this frame, up the next: ImGui sees each press as its own
       break;
-    case ScriptAction::key_down: key(step.key, true, deliver); break;
-    case ScriptAction::key_up: key(step.key, false, deliver); break;
-    case ScriptAction::text: type(step.name, deliver); break;
-    case ScriptAction::mouse_move: move_to(step.points[0], state_.time_seconds); break;
-    case ScriptAction::mouse_down: button(step.button, true, deliver); break;
-    case ScriptAction::mouse_up: button(step.button, false, deliver); break;
+    case ScriptAction::key_down:
+      key(step.key, true, deliver);
+      break;
+    case ScriptAction::key_up:
+      key(step.key, false, deliver);
+      break;
+    case ScriptAction::text:
+      type(step.name, deliver);
+      break;
+    case ScriptAction::mouse_move:
+      move_to(step.points[0], state_.time_seconds);
+      break;
+    case ScriptAction::mouse_down:
+      button(step.button, true, deliver);
+      break;
+    case ScriptAction::mouse_up:
+      button(step.button, false, deliver);
+      break;
     case ScriptAction::click:
       move_to(step.points[0], state_.time_seconds);
       button(0, true, deliver);
@@ -103,11 +115,15 @@ void ScriptedInput::run(const ScriptStep& step, const Deliver& deliver) {
       button(0, true, deliver);
       drag_ = Drag{step.points, frame_, step.frames};
       break;
-    case ScriptAction::wheel: wheel(step.value, deliver); break;
+    case ScriptAction::wheel:
+      wheel(step.value, deliver);
+      break;
     case ScriptAction::gamepad_connect:
     case ScriptAction::gamepad_disconnect:
     case ScriptAction::gamepad_axis:
-    case ScriptAction::gamepad_button: gamepad(step); break;
+    case ScriptAction::gamepad_button:
+      gamepad(step);
+      break;
     case ScriptAction::screenshot:  // of this frame, before later steps change what it shows
       screenshot_ = step.name;
       resume_frame_ = frame_ + 1;
@@ -150,8 +166,10 @@ void ScriptedInput::key(SDL_Scancode code, bool down, const Deliver& deliver) {
 
 void ScriptedInput::button(int index, bool down, const Deliver& deliver) {
   const auto i = static_cast<std::size_t>(index);
-  if (down) state_.mouse_pressed[i] = true;
-  else state_.mouse_released[i] = true;
+  if (down)
+    state_.mouse_pressed[i] = true;
+  else
+    state_.mouse_released[i] = true;
   state_.mouse_down[i] = down;
   if (index == 0) state_.mouse_events.push_back({state_.time_seconds, state_.mouse_pixels, down});
   SDL_Event e{};
@@ -204,8 +222,10 @@ void ScriptedInput::gamepad(const ScriptStep& step) {
   }
   if (state_.gamepads.empty()) fail(step, "no scripted gamepad: add {\"gamepad_connect\": \"name\"} first");
   GamepadSnapshot& pad = state_.gamepads.front();
-  if (step.action == ScriptAction::gamepad_axis) pad.axes[static_cast<std::size_t>(step.axis)] = step.value;
-  else pad.buttons[static_cast<std::size_t>(step.button)] = step.down;
+  if (step.action == ScriptAction::gamepad_axis)
+    pad.axes[static_cast<std::size_t>(step.axis)] = step.value;
+  else
+    pad.buttons[static_cast<std::size_t>(step.button)] = step.down;
 }
 
 // ImGui's SDL backend polls the OS mouse, which the script does not move: set what ImGui reads. A press
@@ -245,7 +265,8 @@ void ScriptedInput::after_frame(const DrawnFrame& frame) {
 }
 
 void ScriptedInput::fail(const ScriptStep& step, const std::string& problem) const {
-  throw ScriptFailure(script_.file.string() + ": " + step.where + " (frame " + std::to_string(frame_) + "): " + problem);
+  throw ScriptFailure(script_.file.string() + ": " + step.where + " (frame " + std::to_string(frame_) +
+                      "): " + problem);
 }
 
 }  // namespace sc

@@ -44,7 +44,7 @@ class ScriptedInput final : public InputSource {
   double time_of(double frame) const { return frame * script_.frame_seconds(); }
   bool waiting();
   void run(const ScriptStep& step, const Deliver& deliver);
-    void release_pending(const Deliver& deliver);
+  void release_pending(const Deliver& deliver);
   void continue_drag(const Deliver& deliver);
   void key(SDL_Scancode key, bool down, const Deliver& deliver);
   void button(int index, bool down, const Deliver& deliver);
@@ -55,17 +55,17 @@ class ScriptedInput final : public InputSource {
   [[noreturn]] void fail(const ScriptStep& step, const std::string& problem) const;
 
   InputScript script_;
-  std::size_t next_ = 0;           // the next step to run
-  long frame_ = 0;                 // frames pumped so far
-  long resume_frame_ = 0;          // steps wait until this frame
+  std::size_t next_ = 0;              // the next step to run
+  long frame_ = 0;                    // frames pumped so far
+  long resume_frame_ = 0;             // steps wait until this frame
   std::optional<std::size_t> until_;  // the until_screen step being waited on
   long until_started_ = 0;
   std::optional<Drag> drag_;
   std::optional<SDL_Scancode> release_key_;  // pressed by a "key" step, released the next frame
   std::optional<int> release_button_;        // pressed by a "click" step
-  std::string screen_;             // the screen shown after the last drawn frame
-  std::string screenshot_;         // PNG to write after this frame, if any
-  FrameInput state_;               // held state, plus this frame's edges and events
+  std::string screen_;                       // the screen shown after the last drawn frame
+  std::string screenshot_;                   // PNG to write after this frame, if any
+  FrameInput state_;                         // held state, plus this frame's edges and events
   int gamepads_connected_ = 0;
   bool finished_ = false;
 };

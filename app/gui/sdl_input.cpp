@@ -7,10 +7,14 @@ namespace {
 
 int mouse_index(Uint8 sdl_button) {
   switch (sdl_button) {
-    case SDL_BUTTON_LEFT: return 0;
-    case SDL_BUTTON_RIGHT: return 1;
-    case SDL_BUTTON_MIDDLE: return 2;
-    default: return -1;
+    case SDL_BUTTON_LEFT:
+      return 0;
+    case SDL_BUTTON_RIGHT:
+      return 1;
+    case SDL_BUTTON_MIDDLE:
+      return 2;
+    default:
+      return -1;
   }
 }
 
@@ -48,13 +52,19 @@ void SdlInput::close_controller(SDL_JoystickID instance_id) {
 
 void SdlInput::handle_event(const SDL_Event& event) {
   switch (event.type) {
-    case SDL_CONTROLLERDEVICEADDED: open_controller(event.cdevice.which); break;
-    case SDL_CONTROLLERDEVICEREMOVED: close_controller(event.cdevice.which); break;
+    case SDL_CONTROLLERDEVICEADDED:
+      open_controller(event.cdevice.which);
+      break;
+    case SDL_CONTROLLERDEVICEREMOVED:
+      close_controller(event.cdevice.which);
+      break;
     case SDL_MOUSEBUTTONDOWN:
     case SDL_MOUSEBUTTONUP:
       if (const int i = mouse_index(event.button.button); i >= 0) {
-        if (event.type == SDL_MOUSEBUTTONDOWN) edges_.mouse_pressed[static_cast<std::size_t>(i)] = true;
-        else edges_.mouse_released[static_cast<std::size_t>(i)] = true;
+        if (event.type == SDL_MOUSEBUTTONDOWN)
+          edges_.mouse_pressed[static_cast<std::size_t>(i)] = true;
+        else
+          edges_.mouse_released[static_cast<std::size_t>(i)] = true;
       }
       if (event.button.button == SDL_BUTTON_LEFT)
         edges_.mouse_events.push_back({event.button.timestamp / 1000.0,
@@ -66,12 +76,15 @@ void SdlInput::handle_event(const SDL_Event& event) {
                                      {static_cast<float>(event.motion.x), static_cast<float>(event.motion.y)},
                                      (event.motion.state & SDL_BUTTON_LMASK) != 0});
       break;
-    case SDL_MOUSEWHEEL: edges_.wheel += static_cast<float>(event.wheel.y); break;
+    case SDL_MOUSEWHEEL:
+      edges_.wheel += static_cast<float>(event.wheel.y);
+      break;
     case SDL_KEYDOWN:
       if (event.key.repeat == 0 && event.key.keysym.scancode < SDL_NUM_SCANCODES)
         edges_.keys_pressed[static_cast<std::size_t>(event.key.keysym.scancode)] = true;
       break;
-    default: break;
+    default:
+      break;
   }
 }
 

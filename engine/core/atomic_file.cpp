@@ -67,7 +67,8 @@ void write_file_atomically(const std::filesystem::path& file, std::string_view b
   if (::rename(tmp.c_str(), file.c_str()) != 0) fail("cannot be replaced: ", errno_text());
   if (!durable) return;
   // Make the rename itself durable.
-  const int dir = ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  const int dir =
+      ::open(file.parent_path().empty() ? "." : file.parent_path().c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir >= 0) {
     ::fsync(dir);
     ::close(dir);

@@ -7,8 +7,8 @@
 namespace sc {
 
 struct ClockAdvance {
-  int steps = 0;             // simulation steps to run this frame
-  double alpha = 0;          // in [0, 1): render state = previous + alpha * (current - previous)
+  int steps = 0;               // simulation steps to run this frame
+  double alpha = 0;            // in [0, 1): render state = previous + alpha * (current - previous)
   double dropped_seconds = 0;  // time discarded by the clamp (0 in normal frames)
 };
 

@@ -44,7 +44,8 @@ std::string read_input_file(const std::filesystem::path& file, std::uintmax_t ma
   if (d.fd < 0) {
     const int error = errno;
     struct stat st {};
-    if (error == EACCES && ::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw InputError(where, "is a directory");
+    if (error == EACCES && ::stat(file.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+      throw InputError(where, "is a directory");
     throw InputError(where, open_problem(error));
   }
   struct stat st {};
@@ -52,7 +53,8 @@ std::string read_input_file(const std::filesystem::path& file, std::uintmax_t ma
   if (!S_ISREG(st.st_mode)) throw InputError(where, kind_of(st.st_mode));
   const auto size = static_cast<std::uintmax_t>(st.st_size);
   if (size > max_bytes)
-    throw InputError(where, "too large (" + std::to_string(size) + " bytes; at most " + std::to_string(max_bytes) + ")");
+    throw InputError(where,
+                     "too large (" + std::to_string(size) + " bytes; at most " + std::to_string(max_bytes) + ")");
   std::string bytes(static_cast<std::size_t>(size), '\0');
   std::size_t done = 0;
   while (done < bytes.size()) {

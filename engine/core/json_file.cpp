@@ -57,7 +57,8 @@ std::optional<JsonView> JsonView::find(std::string_view key) const {
 
 JsonView JsonView::at(std::size_t index) const {
   if (!node_->is_array()) fail("expected an array, got " + type_name(*node_));
-  if (index >= node_->size()) fail("array has " + std::to_string(node_->size()) + " elements, needed index " + std::to_string(index));
+  if (index >= node_->size())
+    fail("array has " + std::to_string(node_->size()) + " elements, needed index " + std::to_string(index));
   return JsonView((*node_)[index], source_, path_ + "[" + std::to_string(index) + "]");
 }
 

@@ -26,15 +26,15 @@ class JsonView {
  public:
   JsonView(const Json& node, std::string source, std::string path = "$");
 
-  JsonView at(std::string_view key) const;             // required member of an object
+  JsonView at(std::string_view key) const;                   // required member of an object
   std::optional<JsonView> find(std::string_view key) const;  // optional member (null counts as absent)
-  JsonView at(std::size_t index) const;                 // element of an array
-  std::size_t size() const;                             // requires an array
+  JsonView at(std::size_t index) const;                      // element of an array
+  std::size_t size() const;                                  // requires an array
   bool is_array() const { return node_->is_array(); }
   bool is_object() const { return node_->is_object(); }
 
-  double number() const;                                // finite number
-  double number_in(double lo, double hi) const;         // finite and within [lo, hi]
+  double number() const;                         // finite number
+  double number_in(double lo, double hi) const;  // finite and within [lo, hi]
   long long integer() const;
   std::string string() const;
   bool boolean() const;

@@ -30,9 +30,7 @@ struct RecordedActions {
   std::vector<DriveAction> actions;
 
   // Number of simulation sub-steps these actions cover.
-  std::int64_t substep_count() const {
-    return static_cast<std::int64_t>(actions.size()) * substeps_per_action;
-  }
+  std::int64_t substep_count() const { return static_cast<std::int64_t>(actions.size()) * substeps_per_action; }
   // The action applied during simulation sub-step `substep` (0-based from the start of the trial).
   // Throws std::out_of_range past the end.
   const DriveAction& action_for_substep(std::int64_t substep) const;

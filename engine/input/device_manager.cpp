@@ -10,8 +10,7 @@ void DeviceManager::ControllerCloser::operator()(SDL_GameController* controller)
   SDL_GameControllerClose(controller);
 }
 
-DeviceManager::DeviceManager(InputSource source, GamepadConfig config)
-    : source_(source), config_(config) {
+DeviceManager::DeviceManager(InputSource source, GamepadConfig config) : source_(source), config_(config) {
   validate(config_);
   // SDL also queues an ADDED event for each of these; open_gamepad() ignores duplicates.
   if (SDL_WasInit(SDL_INIT_GAMECONTROLLER) == 0) return;
@@ -23,11 +22,18 @@ DeviceManager::~DeviceManager() = default;
 
 bool DeviceManager::handle_event(const SDL_Event& event) {
   switch (event.type) {
-    case SDL_CONTROLLERDEVICEADDED: open_gamepad(event.cdevice.which); return true;
-    case SDL_CONTROLLERDEVICEREMOVED: remove_gamepad(event.cdevice.which); return true;
-    case SDL_CONTROLLERBUTTONDOWN: pick_up_gamepad(event.cbutton.which); return true;
+    case SDL_CONTROLLERDEVICEADDED:
+      open_gamepad(event.cdevice.which);
+      return true;
+    case SDL_CONTROLLERDEVICEREMOVED:
+      remove_gamepad(event.cdevice.which);
+      return true;
+    case SDL_CONTROLLERBUTTONDOWN:
+      pick_up_gamepad(event.cbutton.which);
+      return true;
     case SDL_CONTROLLERAXISMOTION:
-    case SDL_CONTROLLERBUTTONUP: return true;
+    case SDL_CONTROLLERBUTTONUP:
+      return true;
     case SDL_JOYDEVICEADDED:
       if (!SDL_IsGameController(event.jdevice.which)) {
         const char* name = SDL_JoystickNameForIndex(event.jdevice.which);
@@ -36,10 +42,12 @@ bool DeviceManager::handle_event(const SDL_Event& event) {
       }
       return false;
     case SDL_KEYDOWN:
-    case SDL_KEYUP: return handle_key(event.key);
+    case SDL_KEYUP:
+      return handle_key(event.key);
     case SDL_MOUSEBUTTONDOWN:
     case SDL_MOUSEBUTTONUP:
-    case SDL_MOUSEMOTION: return handle_mouse(event);
+    case SDL_MOUSEMOTION:
+      return handle_mouse(event);
     case SDL_WINDOWEVENT:
       // Key-up and button-up events will not reach us while unfocused: forget held keys and the knob.
       if (event.window.event == SDL_WINDOWEVENT_FOCUS_LOST) {
@@ -47,7 +55,8 @@ bool DeviceManager::handle_event(const SDL_Event& event) {
         joystick_.release();
       }
       return false;
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -130,12 +139,16 @@ std::string DeviceManager::status_message() const {
              "or choose the mouse or keyboard to continue.";
     case InputState::WaitingForGamepad:
       return "No gamepad connected: plug one in, or choose the mouse or keyboard.";
-    case InputState::Ready: break;
+    case InputState::Ready:
+      break;
   }
   switch (source_) {
-    case InputSource::Gamepad: return "Gamepad: " + find(*active_)->info.name;
-    case InputSource::VirtualJoystick: return "Mouse: drag the on-screen stick";
-    case InputSource::Keyboard: return "Keyboard: arrows or WASD";
+    case InputSource::Gamepad:
+      return "Gamepad: " + find(*active_)->info.name;
+    case InputSource::VirtualJoystick:
+      return "Mouse: drag the on-screen stick";
+    case InputSource::Keyboard:
+      return "Keyboard: arrows or WASD";
   }
   return {};
 }
@@ -155,9 +168,12 @@ std::optional<GamepadInfo> DeviceManager::active_gamepad() const {
 InputReading DeviceManager::read() const {
   if (state() != InputState::Ready) return {};
   switch (source_) {
-    case InputSource::Keyboard: return {keyboard_.action(), false};
-    case InputSource::VirtualJoystick: return {joystick_.action(), false};
-    case InputSource::Gamepad: break;
+    case InputSource::Keyboard:
+      return {keyboard_.action(), false};
+    case InputSource::VirtualJoystick:
+      return {joystick_.action(), false};
+    case InputSource::Gamepad:
+      break;
   }
   return map_gamepad(read_gamepad(find(*active_)->controller.get()), config_);
 }

@@ -15,8 +15,6 @@ DriveAction sanitized(const DriveAction& action) {
   return {sanitized_component(action.accel), sanitized_component(action.steer)};
 }
 
-bool is_valid(const DriveAction& action) {
-  return valid_component(action.accel) && valid_component(action.steer);
-}
+bool is_valid(const DriveAction& action) { return valid_component(action.accel) && valid_component(action.steer); }
 
 }  // namespace sc::input

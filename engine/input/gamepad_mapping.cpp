@@ -13,8 +13,7 @@ constexpr double kMaxDeadZone = 0.9;
 
 void check_dead_zone(double value, const char* name) {
   if (!std::isfinite(value) || value < 0.0 || value > kMaxDeadZone)
-    throw InputError("gamepad config", std::string(name) + " = " + std::to_string(value) +
-                                           " is outside [0, 0.9]");
+    throw InputError("gamepad config", std::string(name) + " = " + std::to_string(value) + " is outside [0, 0.9]");
 }
 
 bool valid_stick_axis(double v) { return std::isfinite(v) && v >= -1.0 && v <= 1.0; }
@@ -29,8 +28,7 @@ InputReading map_left_stick(const GamepadSample& s, const GamepadConfig& config)
 }
 
 InputReading map_triggers(const GamepadSample& s, const GamepadConfig& config) {
-  if (!valid_stick_axis(s.left_x) || !valid_trigger_axis(s.left_trigger) ||
-      !valid_trigger_axis(s.right_trigger))
+  if (!valid_stick_axis(s.left_x) || !valid_trigger_axis(s.left_trigger) || !valid_trigger_axis(s.right_trigger))
     return {{}, true};
   const double forward = rescale_axial_dead_zone(s.right_trigger, config.trigger_dead_zone);
   const double reverse = rescale_axial_dead_zone(s.left_trigger, config.trigger_dead_zone);
@@ -46,8 +44,7 @@ void validate(const GamepadConfig& config) {
 }
 
 InputReading map_gamepad(const GamepadSample& sample, const GamepadConfig& config) {
-  return config.throttle == ThrottleControl::Triggers ? map_triggers(sample, config)
-                                                      : map_left_stick(sample, config);
+  return config.throttle == ThrottleControl::Triggers ? map_triggers(sample, config) : map_left_stick(sample, config);
 }
 
 }  // namespace sc::input

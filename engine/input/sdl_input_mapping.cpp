@@ -8,9 +8,7 @@ double normalized_stick_axis(Sint16 value) {
   return value < 0 ? static_cast<double>(value) / 32768.0 : static_cast<double>(value) / 32767.0;
 }
 
-double normalized_trigger_axis(Sint16 value) {
-  return static_cast<double>(std::max<Sint16>(value, 0)) / 32767.0;
-}
+double normalized_trigger_axis(Sint16 value) { return static_cast<double>(std::max<Sint16>(value, 0)) / 32767.0; }
 
 GamepadSample read_gamepad(SDL_GameController* controller) {
   return {
@@ -23,15 +21,24 @@ GamepadSample read_gamepad(SDL_GameController* controller) {
 
 std::optional<DriveKey> drive_key_for_scancode(SDL_Scancode scancode) {
   switch (scancode) {
-    case SDL_SCANCODE_UP: return DriveKey::Up;
-    case SDL_SCANCODE_DOWN: return DriveKey::Down;
-    case SDL_SCANCODE_LEFT: return DriveKey::Left;
-    case SDL_SCANCODE_RIGHT: return DriveKey::Right;
-    case SDL_SCANCODE_W: return DriveKey::W;
-    case SDL_SCANCODE_A: return DriveKey::A;
-    case SDL_SCANCODE_S: return DriveKey::S;
-    case SDL_SCANCODE_D: return DriveKey::D;
-    default: return std::nullopt;
+    case SDL_SCANCODE_UP:
+      return DriveKey::Up;
+    case SDL_SCANCODE_DOWN:
+      return DriveKey::Down;
+    case SDL_SCANCODE_LEFT:
+      return DriveKey::Left;
+    case SDL_SCANCODE_RIGHT:
+      return DriveKey::Right;
+    case SDL_SCANCODE_W:
+      return DriveKey::W;
+    case SDL_SCANCODE_A:
+      return DriveKey::A;
+    case SDL_SCANCODE_S:
+      return DriveKey::S;
+    case SDL_SCANCODE_D:
+      return DriveKey::D;
+    default:
+      return std::nullopt;
   }
 }
 

@@ -13,8 +13,7 @@ SubstepClock::SubstepClock(double substep_seconds, double max_frame_seconds)
   if (!std::isfinite(substep_seconds) || !std::isfinite(max_frame_seconds) || substep_seconds <= 0.0 ||
       max_frame_seconds < substep_seconds)
     throw InputError("substep clock", "needs 0 < substep (" + std::to_string(substep_seconds) +
-                                          " s) <= max frame time (" + std::to_string(max_frame_seconds) +
-                                          " s)");
+                                          " s) <= max frame time (" + std::to_string(max_frame_seconds) + " s)");
 }
 
 int SubstepClock::advance(double frame_seconds) {

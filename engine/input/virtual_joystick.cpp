@@ -10,8 +10,8 @@ namespace {
 
 void check_base(Vec2 centre, double radius) {
   if (!std::isfinite(centre.x) || !std::isfinite(centre.y) || !std::isfinite(radius) || radius <= 0.0)
-    throw InputError("virtual joystick", "base needs a finite centre and a radius > 0, got radius " +
-                                             std::to_string(radius));
+    throw InputError("virtual joystick",
+                     "base needs a finite centre and a radius > 0, got radius " + std::to_string(radius));
 }
 
 // Pointer in pixels -> unit-disc offset (y down), clamped to the rim.
@@ -69,9 +69,7 @@ void VirtualJoystick::release() {
   offset_ = {};
 }
 
-JoystickView VirtualJoystick::view() const {
-  return {centre_, radius_, knob_for_offset(offset_, centre_, radius_)};
-}
+JoystickView VirtualJoystick::view() const { return {centre_, radius_, knob_for_offset(offset_, centre_, radius_)}; }
 
 DriveAction VirtualJoystick::action() const { return action_for_offset(offset_); }
 

@@ -86,7 +86,8 @@ double ActionSequenceOptimizer::evaluate(const Eigen::VectorXd& z, bool derivati
   residuals_[4] = (end.speed - arrival_speed_) / arrival_speed_scale_;
   if (derivatives) {
     jacobian_.row(0) = (-sh * s_end.row(0) + ch * s_end.row(1)) / w.lateral_scale;
-    if (excess > 0) jacobian_.row(1) = (along > 0 ? 1.0 : -1.0) * (ch * s_end.row(0) + sh * s_end.row(1)) / w.depth_scale;
+    if (excess > 0)
+      jacobian_.row(1) = (along > 0 ? 1.0 : -1.0) * (ch * s_end.row(0) + sh * s_end.row(1)) / w.depth_scale;
     jacobian_.row(2) = -sin_h * s_end.row(2) / w.heading_scale;
     jacobian_.row(3) = cos_h * s_end.row(2) / w.heading_scale;
     jacobian_.row(4) = s_end.row(3) / arrival_speed_scale_;
@@ -97,7 +98,8 @@ double ActionSequenceOptimizer::evaluate(const Eigen::VectorXd& z, bool derivati
     residuals_[row] = w.clearance * hit.depth;
     if (derivatives) {
       const auto& s = rollout_.sensitivity(substep_of_[v]);
-      jacobian_.row(row) = w.clearance * (hit.d_pose[0] * s.row(0) + hit.d_pose[1] * s.row(1) + hit.d_pose[2] * s.row(2));
+      jacobian_.row(row) =
+          w.clearance * (hit.d_pose[0] * s.row(0) + hit.d_pose[1] * s.row(1) + hit.d_pose[2] * s.row(2));
     }
   }
   return residuals_.squaredNorm() + regularisation_cost(z);

@@ -17,16 +17,16 @@
 namespace sc {
 
 struct PlanningCostWeights {
-  double lateral_scale = 0.25;      // m of sideways offset from the spot axis per unit residual
-  double depth_free = 1.5;          // m either side of the spot centre at no cost: the car is fully inside
-  double depth_scale = 1.0;         // m beyond that band per unit residual
-  double heading_scale = 0.04;      // (cos, sin) difference per unit residual (~2.3 degrees)
-  double arrival_speed_scale = 2.0; // m/s of final speed per unit residual
-  double steering_change = 3.0;     // weight of |u1(t) - u1(t-1)|
-  double throttle_change = 0.3;     // weight of |u0(t) - u0(t-1)|
-  double effort = 0.05;             // weight of |u|
-  double clearance = 40.0;          // per metre of disc penetration into the safety margin
-  double clearance_margin = 0.15;   // m of extra clearance around the conservative disc cover
+  double lateral_scale = 0.25;       // m of sideways offset from the spot axis per unit residual
+  double depth_free = 1.5;           // m either side of the spot centre at no cost: the car is fully inside
+  double depth_scale = 1.0;          // m beyond that band per unit residual
+  double heading_scale = 0.04;       // (cos, sin) difference per unit residual (~2.3 degrees)
+  double arrival_speed_scale = 2.0;  // m/s of final speed per unit residual
+  double steering_change = 3.0;      // weight of |u1(t) - u1(t-1)|
+  double throttle_change = 0.3;      // weight of |u0(t) - u0(t-1)|
+  double effort = 0.05;              // weight of |u|
+  double clearance = 40.0;           // per metre of disc penetration into the safety margin
+  double clearance_margin = 0.15;    // m of extra clearance around the conservative disc cover
 };
 
 struct OptimizedSequence {
@@ -37,7 +37,8 @@ struct OptimizedSequence {
 
 class ActionSequenceOptimizer {
  public:
-  ActionSequenceOptimizer(const ParkingScenario& scenario, const ParkingLayout& layout, const PlanningCostWeights& weights);
+  ActionSequenceOptimizer(const ParkingScenario& scenario, const ParkingLayout& layout,
+                          const PlanningCostWeights& weights);
 
   // Aims at another pose than the scenario's goal (e.g. a staging pose in front of the spot), arriving
   // with `arrival_speed` (m/s, signed: negative = reversing).
@@ -62,7 +63,7 @@ class ActionSequenceOptimizer {
   DifferentiableRollout rollout_;
   Eigen::VectorXd residuals_;
   Eigen::MatrixXd jacobian_;
-  Eigen::MatrixXd regularisation_;  // R of the quadratic terms z' R z, rebuilt when T changes
+  Eigen::MatrixXd regularisation_;           // R of the quadratic terms z' R z, rebuilt when T changes
   std::vector<ClearanceViolation> scratch_;  // clearance violations of the last evaluation
   std::vector<int> substep_of_;              // the sub-step of each violation
 };

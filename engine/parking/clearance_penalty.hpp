@@ -11,7 +11,7 @@
 namespace sc {
 
 struct ClearanceViolation {
-  double depth = 0.0;          // radius + margin - signed distance (> 0)
+  double depth = 0.0;            // radius + margin - signed distance (> 0)
   double d_pose[3] = {0, 0, 0};  // d depth / d (x, y, heading)
 };
 

@@ -37,7 +37,10 @@ CollisionChecker::CollisionChecker(const ParkingLayout& layout)
     Obstacle o{box_shape(box.half_length, box.half_width),
                b2Transform(b2Vec2(static_cast<float>(box.x), static_cast<float>(box.y)),
                            b2Rot(static_cast<float>(box.heading))),
-               box.x - ex, box.x + ex, box.y - ey, box.y + ey};
+               box.x - ex,
+               box.x + ex,
+               box.y - ey,
+               box.y + ey};
     obstacles_.push_back(o);
   };
   for (const auto& box : layout.parked_cars) add(box);

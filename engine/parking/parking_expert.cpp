@@ -108,7 +108,8 @@ std::vector<ParkingExpert::Candidate> ParkingExpert::direct_candidates(const Par
                                                                        const CollisionChecker& collisions,
                                                                        ActionSequenceOptimizer& optimizer) const {
   std::vector<Candidate> out;
-  for (const auto& guess : search_manoeuvres(scenario, collisions, goal_pose(scenario), options_.max_steps, options_.guesses)) {
+  for (const auto& guess :
+       search_manoeuvres(scenario, collisions, goal_pose(scenario), options_.max_steps, options_.guesses)) {
     // Give the optimiser a couple of steps more than the primitive needed to come close.
     std::vector<ParkingAction> init = guess.actions;
     init.resize(std::min<std::size_t>(init.size() + 2, options_.max_steps), init.back());
@@ -125,13 +126,15 @@ std::vector<ParkingExpert::Candidate> ParkingExpert::staged_candidates(const Par
   // roll straight in, then optimise the whole sequence for the goal.
   const Pose staging = staging_pose(scenario);
   std::vector<Candidate> out;
-  for (const auto& guess : search_manoeuvres(scenario, collisions, staging, options_.max_steps, options_.staged_guesses)) {
+  for (const auto& guess :
+       search_manoeuvres(scenario, collisions, staging, options_.max_steps, options_.staged_guesses)) {
     std::vector<ParkingAction> init = guess.actions;
     init.resize(std::min<std::size_t>(init.size() + 2, options_.max_steps), init.back());
     optimizer.set_target(staging, 0.5, scenario.reverse_in ? -options_.roll_in_speed : options_.roll_in_speed, 1.0);
     const OptimizedSequence reach = optimizer.optimize(to_vector(init), options_.first_iterations);
     std::vector<ParkingAction> full = to_actions(reach.actions);
-    full.resize(std::min<std::size_t>(full.size() + options_.roll_in_steps, options_.max_steps), ParkingAction{0.0, 0.0});
+    full.resize(std::min<std::size_t>(full.size() + options_.roll_in_steps, options_.max_steps),
+                ParkingAction{0.0, 0.0});
     optimizer.set_target(goal_pose(scenario), options_.weights.depth_free, 0.0, options_.weights.arrival_speed_scale);
     const OptimizedSequence opt = optimizer.optimize(to_vector(full), options_.first_iterations);
     out.push_back({opt.actions, simulate_plan(scenario, to_actions(opt.actions))});
@@ -174,7 +177,8 @@ ParkingPlan ParkingExpert::plan(const ParkingScenario& scenario) const {
     auto staged = staged_candidates(scenario, collisions, optimizer);
     candidates.insert(candidates.end(), std::make_move_iterator(staged.begin()), std::make_move_iterator(staged.end()));
   }
-  std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return better_plan(a.plan, b.plan); });
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const auto& a, const auto& b) { return better_plan(a.plan, b.plan); });
 
   ParkingPlan best = candidates.empty() ? simulate_plan(scenario, {}) : candidates.front().plan;
   const int refine = std::min<int>(options_.refine_best, static_cast<int>(candidates.size()));

@@ -61,7 +61,8 @@ class ParkingExpert {
                                            ActionSequenceOptimizer& optimizer) const;
   std::vector<Candidate> staged_candidates(const ParkingScenario& scenario, const CollisionChecker& collisions,
                                            ActionSequenceOptimizer& optimizer) const;
-  ParkingPlan shorten(const ParkingScenario& scenario, ActionSequenceOptimizer& optimizer, const Candidate& candidate) const;
+  ParkingPlan shorten(const ParkingScenario& scenario, ActionSequenceOptimizer& optimizer,
+                      const Candidate& candidate) const;
 
   ParkingExpertOptions options_;
 };

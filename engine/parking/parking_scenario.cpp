@@ -7,9 +7,7 @@
 
 namespace sc {
 
-std::string_view to_string(LotVariant variant) {
-  return variant == LotVariant::Parked ? "parked" : "classic";
-}
+std::string_view to_string(LotVariant variant) { return variant == LotVariant::Parked ? "parked" : "classic"; }
 
 LotVariant parse_lot_variant(std::string_view text, std::string_view where) {
   if (text == "classic") return LotVariant::Classic;
@@ -24,7 +22,8 @@ std::string_view to_string(GoalRegion region) {
 GoalRegion parse_goal_region(std::string_view text, std::string_view where) {
   if (text == "whole-lot") return GoalRegion::WholeLot;
   if (text == "study-corner") return GoalRegion::StudyCorner;
-  throw InputError(where, "unknown goal region \"" + std::string(text) + "\" (expected \"whole-lot\" or \"study-corner\")");
+  throw InputError(where,
+                   "unknown goal region \"" + std::string(text) + "\" (expected \"whole-lot\" or \"study-corner\")");
 }
 
 std::vector<int> goal_spots(GoalRegion region) {

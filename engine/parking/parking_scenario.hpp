@@ -1,8 +1,8 @@
 #pragma once
 // A parking scenario: everything that, with the action sequence, determines an episode.
 #include <cstdint>
-#include <string>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 

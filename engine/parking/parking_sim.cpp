@@ -9,8 +9,9 @@ ParkingObservation make_observation(const VehicleState& s, const Pose& goal) {
   // The reported velocity ignores the slip angle (reference-facts §1.5); cos(pi/2) stays 6.1e-17 as upstream.
   const double c = std::cos(s.heading);
   const double sn = std::sin(s.heading);
-  return {s.x / 100.0, s.y / 100.0, s.speed * c / 5.0, s.speed * sn / 5.0, c, sn,
-          goal.x / 100.0, goal.y / 100.0, 0.0, 0.0, std::cos(goal.heading), std::sin(goal.heading)};
+  return {s.x / 100.0, s.y / 100.0, s.speed * c / 5.0,      s.speed * sn / 5.0,
+          c,           sn,          goal.x / 100.0,         goal.y / 100.0,
+          0.0,         0.0,         std::cos(goal.heading), std::sin(goal.heading)};
 }
 
 double parking_goal_distance(const ParkingObservation& o) {
@@ -33,9 +34,7 @@ void ParkingSim::reset() {
   done_ = succeeded_ = collided_ = false;
 }
 
-ParkingStepResult ParkingSim::step(const ParkingAction& action) {
-  return step_substeps({action, action, action});
-}
+ParkingStepResult ParkingSim::step(const ParkingAction& action) { return step_substeps({action, action, action}); }
 
 ParkingStepResult ParkingSim::step_substeps(const std::array<ParkingAction, parking::kSubstepsPerAction>& actions) {
   if (done_) throw std::logic_error("ParkingSim::step after the episode ended");

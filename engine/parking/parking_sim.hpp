@@ -16,8 +16,8 @@ using ParkingObservation = std::array<double, 12>;
 
 namespace parking {
 inline constexpr std::array<double, 6> kRewardWeights{1.0, 0.3, 0.0, 0.0, 0.02, 0.02};
-inline constexpr double kSuccessReward = -0.12;  // success when reward > -0.12
-inline constexpr double kCollisionReward = -5.0; // added on the step that collides (never used upstream)
+inline constexpr double kSuccessReward = -0.12;   // success when reward > -0.12
+inline constexpr double kCollisionReward = -5.0;  // added on the step that collides (never used upstream)
 }  // namespace parking
 
 ParkingObservation make_observation(const VehicleState& state, const Pose& goal);
@@ -28,10 +28,10 @@ double parking_goal_distance(const ParkingObservation& observation);
 inline bool is_success_reward(double reward) { return reward > parking::kSuccessReward; }
 
 struct ParkingStepResult {
-  double reward = 0.0;     // includes the collision penalty on a colliding step
+  double reward = 0.0;  // includes the collision penalty on a colliding step
   bool success = false;
   bool collision = false;
-  bool done = false;       // success, collision or the 100-step horizon
+  bool done = false;  // success, collision or the 100-step horizon
 };
 
 class ParkingSim {

@@ -47,15 +47,19 @@ void parse_goal(const JsonView& goal, ParkingScenario& s) {
   if (x && y) {
     const int at = spot_at(x->number(), y->number());
     if (at < 0) goal.fail("(x, y) is not the centre of a parking spot");
-    if (spot && at != s.goal_spot) goal.fail("(x, y) is the centre of spot " + std::to_string(at) + ", not of spot " + std::to_string(s.goal_spot));
+    if (spot && at != s.goal_spot)
+      goal.fail("(x, y) is the centre of spot " + std::to_string(at) + ", not of spot " + std::to_string(s.goal_spot));
     s.goal_spot = at;
   }
   if (heading) {
     const double h = heading->number();
     const double in = spot_pose(s.goal_spot).heading;
-    if (angle_difference(h, in) <= kGoalMatchRadians) s.reverse_in = false;
-    else if (angle_difference(h, in + std::numbers::pi) <= kGoalMatchRadians) s.reverse_in = true;
-    else heading->fail("goal heading must point into the spot or out of it (+-pi/2)");
+    if (angle_difference(h, in) <= kGoalMatchRadians)
+      s.reverse_in = false;
+    else if (angle_difference(h, in + std::numbers::pi) <= kGoalMatchRadians)
+      s.reverse_in = true;
+    else
+      heading->fail("goal heading must point into the spot or out of it (+-pi/2)");
   }
 }
 
@@ -81,7 +85,8 @@ ParkingScenario parse_parking_scenario(const JsonView& v) {
   s.heading0 = v.at("heading0").number();
   if (auto variant = v.find("variant")) {
     const std::string name = variant->string();
-    if (name != "classic" && name != "parked") variant->fail("unknown lot variant \"" + name + "\" (expected \"classic\" or \"parked\")");
+    if (name != "classic" && name != "parked")
+      variant->fail("unknown lot variant \"" + name + "\" (expected \"classic\" or \"parked\")");
     s.variant = parse_lot_variant(name, variant->path());
   }
   if (auto seed = v.find("obstacle_seed")) {
@@ -110,10 +115,10 @@ ParkingScenario parse_parking_scenario(const JsonView& v) {
 Json parking_scenario_to_json(const ParkingScenario& s) {
   const Pose goal = goal_pose(s);
   Json doc{{"heading0", s.heading0},
-            {"goal", {{"spot", s.goal_spot}, {"x", goal.x}, {"y", goal.y}, {"heading", goal.heading}}},
-            {"variant", std::string(to_string(s.variant))},
-            {"obstacle_seed", s.obstacle_seed},
-            {"reverse_in", s.reverse_in}};
+           {"goal", {{"spot", s.goal_spot}, {"x", goal.x}, {"y", goal.y}, {"heading", goal.heading}}},
+           {"variant", std::string(to_string(s.variant))},
+           {"obstacle_seed", s.obstacle_seed},
+           {"reverse_in", s.reverse_in}};
   if (s.start)
     doc["start"] = {{"x", s.start->x}, {"y", s.start->y}, {"heading", s.start->heading}, {"speed", s.start->speed}};
   return doc;
@@ -127,19 +132,24 @@ ParkingTrial parse_parking_trial(const Json& doc, std::string_view source) {
   t.scenario = parse_parking_scenario(root.at("scenario"));
   if (auto hz = root.find("control_hz")) {
     t.control_hz = static_cast<int>(hz->integer());
-    if (t.control_hz != parking::kControlHz && t.control_hz != parking::kSimulationHz) hz->fail("control_hz must be 5 or 15");
+    if (t.control_hz != parking::kControlHz && t.control_hz != parking::kSimulationHz)
+      hz->fail("control_hz must be 5 or 15");
   }
   const auto actions = root.at("actions");
   const std::size_t n = actions.size();
   if (n > parking::kMaxTrialActions)
-    actions.fail("has " + std::to_string(n) + " actions, more than the limit of " + std::to_string(parking::kMaxTrialActions));
+    actions.fail("has " + std::to_string(n) + " actions, more than the limit of " +
+                 std::to_string(parking::kMaxTrialActions));
   if (t.control_hz == parking::kSimulationHz && n % parking::kSubstepsPerAction != 0)
     actions.fail("with control_hz 15 the number of actions must be a multiple of 3, got " + std::to_string(n));
   t.actions = parse_rows<ParkingAction>(actions, n, parse_action, "actions");
   const auto steps = static_cast<std::size_t>(t.control_steps());
-  if (auto states = root.find("states")) t.states = parse_rows<ParkingObservation>(*states, steps + 1, parse_observation, "states (one per control step plus the start)");
+  if (auto states = root.find("states"))
+    t.states = parse_rows<ParkingObservation>(*states, steps + 1, parse_observation,
+                                              "states (one per control step plus the start)");
   if (auto rewards = root.find("rewards"))
-    t.rewards = parse_rows<double>(*rewards, steps, [](const JsonView& r) { return r.number(); }, "rewards (one per control step)");
+    t.rewards = parse_rows<double>(
+        *rewards, steps, [](const JsonView& r) { return r.number(); }, "rewards (one per control step)");
   if (auto success = root.find("success")) t.success = success->boolean();
   if (auto s = root.find("source")) t.source = s->string();
   if (auto s = root.find("created")) t.created = s->string();

@@ -8,17 +8,17 @@ namespace sc {
 
 // Constants of the reference environment (reference-facts §1.1, §1.3, §1.4).
 namespace parking {
-inline constexpr double kCarLength = 5.0;             // m, position = centre of the body
-inline constexpr double kCarWidth = 2.0;              // m
-inline constexpr double kHalfLength = kCarLength / 2; // the model's lr = lf = L/2
-inline constexpr double kMaxSpeed = 40.0;             // m/s
-inline constexpr double kMaxAcceleration = 5.0;       // m/s^2 at |u0| = 1
+inline constexpr double kCarLength = 5.0;                     // m, position = centre of the body
+inline constexpr double kCarWidth = 2.0;                      // m
+inline constexpr double kHalfLength = kCarLength / 2;         // the model's lr = lf = L/2
+inline constexpr double kMaxSpeed = 40.0;                     // m/s
+inline constexpr double kMaxAcceleration = 5.0;               // m/s^2 at |u0| = 1
 inline constexpr double kMaxSteering = std::numbers::pi / 4;  // rad at |u1| = 1
 inline constexpr int kSimulationHz = 15;
 inline constexpr int kControlHz = 5;
 inline constexpr int kSubstepsPerAction = kSimulationHz / kControlHz;  // 3
 inline constexpr double kDt = 1.0 / kSimulationHz;
-inline constexpr int kHorizon = 100;                  // control steps per episode (20 s)
+inline constexpr int kHorizon = 100;  // control steps per episode (20 s)
 }  // namespace parking
 
 // u0 = acceleration, u1 = steering, each in [-1, 1] (values outside are clipped, as in the reference).

@@ -19,7 +19,7 @@ const ImU32 kDialFace = rgba(20, 24, 31, 215);
 const ImU32 kDialTrack = rgba(80, 88, 104, 255);
 const ImU32 kText = rgba(235, 238, 245, 255);
 const ImU32 kCaption = rgba(160, 168, 184, 255);
-const ImU32 kForward = rgba(91, 155, 255, 255);  // the ghost path's forward blue
+const ImU32 kForward = rgba(91, 155, 255, 255);   // the ghost path's forward blue
 const ImU32 kReverse = rgba(255, 111, 145, 255);  // and its reversing pink
 const ImU32 kNeedle = rgba(255, 226, 138, 255);
 
@@ -77,7 +77,8 @@ void draw_speed_gauge(ImDrawList& dl, ImVec2 c, float radius, double speed, floa
   dl.AddCircleFilled(c, 4.0f * s, kNeedle, 12);
   char text[32];
   const bool reversing = value < -0.05;
-  std::snprintf(text, sizeof text, reversing ? "R %.1f m/s" : "%.1f m/s", std::fabs(value) < 0.05 ? 0.0 : std::fabs(value));
+  std::snprintf(text, sizeof text, reversing ? "R %.1f m/s" : "%.1f m/s",
+                std::fabs(value) < 0.05 ? 0.0 : std::fabs(value));
   text_centered(dl, {c.x, c.y + radius * 0.5f}, text, reversing ? kReverse : kText, 0.75f);
   caption_below(dl, c, radius, "speed", s);
 }

@@ -23,7 +23,7 @@ struct GaugeLayout {
   ImVec2 speed;      // dial centres
   ImVec2 steering;
   ImVec2 stick;
-  ImVec2 min, max;   // the panel behind the three dials
+  ImVec2 min, max;  // the panel behind the three dials
 };
 
 // Three dials in a row whose panel's bottom-right corner is at `bottom_right` (pixels).

@@ -19,8 +19,7 @@ namespace sc {
 
 class LiveParkingDrive {
  public:
-  explicit LiveParkingDrive(const ParkingScenario& scenario,
-                            input::ActionTiming timing = input::ActionTiming::Latched);
+  explicit LiveParkingDrive(const ParkingScenario& scenario, input::ActionTiming timing = input::ActionTiming::Latched);
 
   // One simulation sub-step with the device's live action. Does nothing once done().
   void substep(const input::DriveAction& live);

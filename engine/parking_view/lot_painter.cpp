@@ -29,7 +29,8 @@ void paint_walls(Renderer2D& r, const ParkingLayout& layout) {
 void paint_lot(Renderer2D& r, const ParkingLayout& layout) {
   const WorldRect visible = r.camera().visible_world();
   r.fill_rect({{(visible.min_x + visible.max_x) / 2, (visible.min_y + visible.max_y) / 2},
-               {(visible.max_x - visible.min_x) / 2, (visible.max_y - visible.min_y) / 2}, 0.0f},
+               {(visible.max_x - visible.min_x) / 2, (visible.max_y - visible.min_y) / 2},
+               0.0f},
               parking_view::kGround);
   for (int spot = 0; spot < parking::kSpotCount; ++spot)
     for (const LineSegment& line : spot_lines(spot)) {
@@ -52,7 +53,8 @@ void paint_goal(Renderer2D& r, const Pose& goal, bool reverse_in) {
   r.fill_rect(car, target.with_alpha(0.16f));
   const Vec2f side{-forward.y, forward.x};
   const Vec2f half_l = forward * car.half_size.x, half_w = side * car.half_size.y;
-  const std::array<Vec2f, 4> corners{c - half_l - half_w, c + half_l - half_w, c + half_l + half_w, c - half_l + half_w};
+  const std::array<Vec2f, 4> corners{c - half_l - half_w, c + half_l - half_w, c + half_l + half_w,
+                                     c - half_l + half_w};
   PathStyle closed;
   closed.closed = true;
   r.dashed_polyline(corners, Stroke::world(0.16f), {0.5f, 0.35f}, target.with_alpha(0.95f), closed);

@@ -12,9 +12,9 @@
 namespace sc {
 
 namespace parking_view {
-inline constexpr Color kGround = Color::hex(0x646464);       // (100,100,100)
+inline constexpr Color kGround = Color::hex(0x646464);  // (100,100,100)
 inline constexpr Color kLaneLine = Color::hex(0xffffff);
-inline constexpr float kLaneLineWidth = 2.0f / 7.0f;         // int(0.3 * 7) = 2 px at 7 px/m
+inline constexpr float kLaneLineWidth = 2.0f / 7.0f;  // int(0.3 * 7) = 2 px at 7 px/m
 inline constexpr Color kWall = Color::hex(0x3a3a3e);
 inline constexpr Color kWallEdge = Color::hex(0x8a8a90);
 inline constexpr Color kGoalFill = Color::hex(0x64c8ff);     // (100,200,255)

@@ -10,8 +10,8 @@
 namespace sc {
 
 namespace parking_view {
-inline constexpr float kLotMargin = 3.0f;                  // metres around the lot in the whole-lot view
-inline constexpr float kFollowViewWidth = 600.0f / 7.0f;   // metres (reference surface / scaling)
+inline constexpr float kLotMargin = 3.0f;                 // metres around the lot in the whole-lot view
+inline constexpr float kFollowViewWidth = 600.0f / 7.0f;  // metres (reference surface / scaling)
 inline constexpr float kFollowViewHeight = 300.0f / 7.0f;
 }  // namespace parking_view
 

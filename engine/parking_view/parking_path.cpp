@@ -72,8 +72,8 @@ ParkingPath simulate_parking_path(const ParkingTrial& trial) {
 }
 
 CarPose car_pose_of(const VehicleState& v, double steering) {
-  return {{static_cast<float>(v.x), static_cast<float>(v.y)}, static_cast<float>(v.heading),
-          static_cast<float>(steering)};
+  return {
+      {static_cast<float>(v.x), static_cast<float>(v.y)}, static_cast<float>(v.heading), static_cast<float>(steering)};
 }
 
 CarPose interpolate_car_pose(const VehicleState& a, const VehicleState& b, double steering, double alpha) {

@@ -40,8 +40,7 @@ ParkingPath simulate_parking_path(const ParkingTrial& trial);
 CarPose car_pose_at(const ParkingPath& path, double t);
 CarPose car_pose_of(const VehicleState& vehicle, double steering);
 // Interpolates between two simulation states (alpha in [0, 1]) for drawing between fixed steps.
-CarPose interpolate_car_pose(const VehicleState& previous, const VehicleState& current, double steering,
-                             double alpha);
+CarPose interpolate_car_pose(const VehicleState& previous, const VehicleState& current, double steering, double alpha);
 
 // Sample positions as float world points (for polylines).
 std::vector<Vec2f> path_points(const ParkingPath& path);

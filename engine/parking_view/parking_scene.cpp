@@ -26,8 +26,7 @@ Camera2D parking_scene_camera(const ParkingSceneView& view, CameraMode mode, Pix
   std::vector<Vec2f> points(view.trail.begin(), view.trail.end());
   if (view.car) add_car_extent(points, *view.car);
   if (view.ghost_path != nullptr)
-    for (const PathSample& s : view.ghost_path->samples)
-      add_car_extent(points, car_pose_of(s.vehicle, 0.0));
+    for (const PathSample& s : view.ghost_path->samples) add_car_extent(points, car_pose_of(s.vehicle, 0.0));
   return whole_lot_camera(*view.layout, points, viewport);
 }
 
@@ -37,7 +36,8 @@ void paint_parking_scene(Renderer2D& r, const ParkingSceneView& view) {
   if (view.ghost_path != nullptr) paint_ghost_path(r, *view.ghost_path);
   paint_goal(r, view.goal, view.reverse_in);
   paint_trail(r, view.trail);
-  if (view.ghost_path != nullptr && view.ghost_time) paint_ghost_car(r, *view.ghost_path, *view.ghost_time, view.ghost_alpha);
+  if (view.ghost_path != nullptr && view.ghost_time)
+    paint_ghost_car(r, *view.ghost_path, *view.ghost_time, view.ghost_alpha);
   if (view.car) paint_car(r, *view.car, reference_car_look());
 }
 

@@ -48,8 +48,10 @@ std::vector<PathRun> split_by_direction(const ParkingPath& path, double min_leng
     const double along = dx * std::cos(s[i - 1].vehicle.heading) + dy * std::sin(s[i - 1].vehicle.heading);
     const bool moving = std::fabs(along) > 1e-9;
     const bool reversing = moving ? along < 0 : (!runs.empty() && runs.back().reversing);
-    if (runs.empty() || runs.back().reversing != reversing) runs.push_back({i - 1, i, reversing});
-    else runs.back().last = i;
+    if (runs.empty() || runs.back().reversing != reversing)
+      runs.push_back({i - 1, i, reversing});
+    else
+      runs.back().last = i;
   }
   // Merge runs too short to be a manoeuvre into their predecessor (or successor for the first run).
   std::vector<PathRun> merged;

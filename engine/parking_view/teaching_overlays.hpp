@@ -38,8 +38,8 @@ struct TrailStyle {
 void paint_trail(Renderer2D& renderer, std::span<const Vec2f> positions, const TrailStyle& style = {});
 
 struct GhostPathStyle {
-  float width = 2.0f;            // metres: the car's width, so the ribbon is the swept lane of the car
-  float arrow_spacing = 4.0f;    // metres between direction arrows
+  float width = 2.0f;          // metres: the car's width, so the ribbon is the swept lane of the car
+  float arrow_spacing = 4.0f;  // metres between direction arrows
   Color forward = parking_view::kGhostForward;
   Color reverse = parking_view::kGhostReverse;
   Color forward_arrow = parking_view::kGhostForwardArrow;

@@ -30,7 +30,8 @@ Range value_range(const BarChartPanel& panel) {
 
 struct BarPainter : Painter {
   void bars(const BarChartPanel& panel, const std::vector<BarSeries>& series, const Range& r, const PanelBox& box) {
-    const float group_width = (box.right - box.left) / static_cast<float>(std::max<std::size_t>(panel.groups.size(), 1));
+    const float group_width =
+        (box.right - box.left) / static_cast<float>(std::max<std::size_t>(panel.groups.size(), 1));
     const float bar_width = 0.8f * group_width / static_cast<float>(std::max<std::size_t>(series.size(), 1));
     const float zero = y_of(r, box, 0.0);
     for (std::size_t g = 0; g < panel.groups.size(); ++g) {
@@ -53,8 +54,8 @@ struct BarPainter : Painter {
         const float label_y = v < 0 ? y_of(r, box, v - e) + 10 * s : y_of(r, box, v + e) - 10 * s;
         text_centered(dl, imgui.fonts().body, 13.0f * s, {mid, label_y}, kText, printf_value(panel.value_format, v));
       }
-      text_centered(dl, imgui.fonts().bold, 17.0f * s, {box.left + group_width * (static_cast<float>(g) + 0.5f), box.bottom + 22 * s},
-                    kText, group.label);
+      text_centered(dl, imgui.fonts().bold, 17.0f * s,
+                    {box.left + group_width * (static_cast<float>(g) + 0.5f), box.bottom + 22 * s}, kText, group.label);
     }
   }
 };
@@ -67,11 +68,12 @@ RgbaImage render_bar_chart_figure(GlContext& context, const BarChartFigure& figu
   return render_chart(context, frame, [&](Painter& painter, float bottom) {
     BarPainter p{painter};
     const float s = p.s;
-    const float panel_width = static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
+    const float panel_width =
+        static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
     for (std::size_t i = 0; i < figure.panels.size(); ++i) {
       const BarChartPanel& panel = figure.panels[i];
-      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 24 * s,
-                         bottom - 56 * s};
+      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s,
+                         panel_width * static_cast<float>(i + 1) - 24 * s, bottom - 56 * s};
       const Range range = value_range(panel);
       p.value_axis(panel.title, range, box);
       p.bars(panel, figure.series, range, box);

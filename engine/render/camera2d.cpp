@@ -7,8 +7,7 @@
 
 namespace sc {
 
-Camera2D::Camera2D(WorldRect world, PixelViewport viewport, WorldYAxis y_axis)
-    : viewport_(viewport), y_axis_(y_axis) {
+Camera2D::Camera2D(WorldRect world, PixelViewport viewport, WorldYAxis y_axis) : viewport_(viewport), y_axis_(y_axis) {
   const float world_w = world.max_x - world.min_x, world_h = world.max_y - world.min_y;
   if (!(world_w > 0) || !(world_h > 0) || !std::isfinite(world_w) || !std::isfinite(world_h))
     throw InputError("Camera2D", "world rectangle must have a positive finite size");

@@ -45,7 +45,10 @@ void Painter::value_axis(const std::string& title, const Range& r, const PanelBo
   for (double v = std::ceil(r.lo / step) * step; v <= r.hi + 1e-12; v += step) {
     const float y = y_of(r, box, v);
     line({box.left, y}, {box.right, y}, 1.0f, std::fabs(v) < step * 1e-6 ? kAxis : kGrid);
-    const std::string label = printf_value(step < 0.01 ? "%.3f" : step < 0.1 ? "%.2f" : "%.1f", std::fabs(v) < step * 1e-6 ? 0.0 : v);
+    const std::string label = printf_value(step < 0.01  ? "%.3f"
+                                           : step < 0.1 ? "%.2f"
+                                                        : "%.1f",
+                                           std::fabs(v) < step * 1e-6 ? 0.0 : v);
     const ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, 0.0f, label.c_str());
     dl->AddText(font, size, {box.left - extent.x - 8 * s, y - extent.y / 2}, kMuted, label.c_str());
   }
@@ -57,7 +60,8 @@ void Painter::legend(const std::vector<LegendEntry>& entries, float y, float wid
   ImFont* font = imgui.fonts().body;
   const float size = 16.0f * s, swatch = 14.0f * s, gap = 28.0f * s;
   float total = 0.0f;
-  for (const LegendEntry& b : entries) total += swatch + 6 * s + font->CalcTextSizeA(size, FLT_MAX, 0.0f, b.label.c_str()).x + gap;
+  for (const LegendEntry& b : entries)
+    total += swatch + 6 * s + font->CalcTextSizeA(size, FLT_MAX, 0.0f, b.label.c_str()).x + gap;
   float x = (width - total + gap) / 2;
   for (const LegendEntry& b : entries) {
     rect(x, y - swatch / 2, x + swatch, y + swatch / 2, b.color);
@@ -66,7 +70,8 @@ void Painter::legend(const std::vector<LegendEntry>& entries, float y, float wid
   }
 }
 
-RgbaImage render_chart(GlContext& context, const ChartFrame& frame, const std::function<void(Painter&, float bottom)>& panels) {
+RgbaImage render_chart(GlContext& context, const ChartFrame& frame,
+                       const std::function<void(Painter&, float bottom)>& panels) {
   context.make_current();
   context.resize(frame.width, frame.height);
   Renderer2D renderer(context);
@@ -80,8 +85,8 @@ RgbaImage render_chart(GlContext& context, const ChartFrame& frame, const std::f
   const float notes_height = static_cast<float>(frame.notes.size()) * 20.0f * s;
   panels(p, h - notes_height);
   for (std::size_t i = 0; i < frame.notes.size(); ++i)
-    p.dl->AddText(imgui.fonts().body, 14.0f * s, {16 * s, h - notes_height - 8 * s + 20.0f * s * static_cast<float>(i)}, kMuted,
-                  frame.notes[i].c_str());
+    p.dl->AddText(imgui.fonts().body, 14.0f * s, {16 * s, h - notes_height - 8 * s + 20.0f * s * static_cast<float>(i)},
+                  kMuted, frame.notes[i].c_str());
   renderer.end_frame();
   imgui.end_frame();
   context.present();

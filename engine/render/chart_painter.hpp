@@ -64,6 +64,7 @@ struct ChartFrame {
 
 // One figure: resizes `context`, draws the title, the legend and the notes, and calls
 // panels(painter, bottom) to draw the panels between the legend and `bottom` (pixels, above the notes).
-RgbaImage render_chart(GlContext& context, const ChartFrame& frame, const std::function<void(Painter&, float bottom)>& panels);
+RgbaImage render_chart(GlContext& context, const ChartFrame& frame,
+                       const std::function<void(Painter&, float bottom)>& panels);
 
 }  // namespace sc::chart

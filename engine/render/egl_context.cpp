@@ -45,11 +45,12 @@ class EglContext final : public OffscreenGlContext {
     EGLint config_count = 0;
     if (eglChooseConfig(display_, config_attribs, &config, 1, &config_count) == EGL_FALSE || config_count < 1)
       throw InputError(kWhere, "no EGL config for desktop OpenGL: " + egl_error_text());
-    const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_NONE};
+    const EGLint context_attribs[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           3,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
-    if (context_ == EGL_NO_CONTEXT) throw InputError(kWhere, "cannot create an OpenGL 3.3 core context: " + egl_error_text());
+    if (context_ == EGL_NO_CONTEXT)
+      throw InputError(kWhere, "cannot create an OpenGL 3.3 core context: " + egl_error_text());
     bind_context();
     load_functions(&egl_proc, kWhere);
     attach_framebuffer(width, height);

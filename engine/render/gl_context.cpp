@@ -32,26 +32,24 @@ OffscreenBackend offscreen_backend_from_env() {
   throw InputError("SKILLCOACH_GL", "unknown offscreen backend '" + std::string(value) + "' (use osmesa or egl)");
 }
 
-std::string_view to_string(OffscreenBackend backend) {
-  return backend == OffscreenBackend::osmesa ? "osmesa" : "egl";
-}
+std::string_view to_string(OffscreenBackend backend) { return backend == OffscreenBackend::osmesa ? "osmesa" : "egl"; }
 
 std::unique_ptr<GlContext> create_offscreen_context(OffscreenBackend backend, int width, int height) {
-  return backend == OffscreenBackend::osmesa ? create_osmesa_context(width, height)
-                                             : create_egl_context(width, height);
+  return backend == OffscreenBackend::osmesa ? create_osmesa_context(width, height) : create_egl_context(width, height);
 }
 
 std::unique_ptr<GlContext> create_offscreen_context_from_env(int width, int height) {
   const char* chosen = std::getenv("SKILLCOACH_GL");
-  if (chosen != nullptr && *chosen != '\0') return create_offscreen_context(offscreen_backend_from_env(), width, height);
+  if (chosen != nullptr && *chosen != '\0')
+    return create_offscreen_context(offscreen_backend_from_env(), width, height);
   try {
     return create_osmesa_context(width, height);
   } catch (const InputError& osmesa_error) {
     try {
       return create_egl_context(width, height);
     } catch (const InputError& egl_error) {
-      throw InputError("offscreen OpenGL", std::string("no context available: ") + osmesa_error.what() + "; " +
-                                               egl_error.what());
+      throw InputError("offscreen OpenGL",
+                       std::string("no context available: ") + osmesa_error.what() + "; " + egl_error.what());
     }
   }
 }

@@ -11,8 +11,8 @@ thread_local const GlFunctions* t_current_functions = nullptr;
 
 GlFunctions load_gl_functions(GlProcLoader loader, const std::string& context_name) {
   GlFunctions gl;
-#define SC_GL_LOAD(type, name)                                                                    \
-  gl.name = reinterpret_cast<type>(loader("gl" #name));                                           \
+#define SC_GL_LOAD(type, name)                          \
+  gl.name = reinterpret_cast<type>(loader("gl" #name)); \
   if (gl.name == nullptr) throw InputError(context_name, "OpenGL function gl" #name " is missing");
   SC_GL_FUNCTION_LIST(SC_GL_LOAD)
 #undef SC_GL_LOAD

@@ -61,7 +61,8 @@ struct LinePainter : Painter {
   void series(const LineChartPanel& panel, const Range& xr, const Range& r, const PanelBox& box) {
     for (const LineSeries& l : panel.series) {
       std::vector<Vec2f> points;
-      for (std::size_t i = 0; i < l.x.size() && i < l.y.size(); ++i) points.push_back({x_of(xr, box, l.x[i]), y_of(r, box, l.y[i])});
+      for (std::size_t i = 0; i < l.x.size() && i < l.y.size(); ++i)
+        points.push_back({x_of(xr, box, l.x[i]), y_of(r, box, l.y[i])});
       if (points.size() > 1) renderer.polyline(points, Stroke::pixels(3.0f), l.color);
       // A label goes above its point, or below it when the previous label sits too close to the left.
       Vec2f last{-1e9f, -1e9f};
@@ -97,12 +98,13 @@ RgbaImage render_line_chart_figure(GlContext& context, const LineChartFigure& fi
   return render_chart(context, frame, [&](Painter& painter, float bottom) {
     LinePainter p{painter};
     const float s = p.s;
-    const float panel_width = static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
+    const float panel_width =
+        static_cast<float>(figure.width) / static_cast<float>(std::max<std::size_t>(figure.panels.size(), 1));
     const Range xr = x_range(figure);
     for (std::size_t i = 0; i < figure.panels.size(); ++i) {
       const LineChartPanel& panel = figure.panels[i];
-      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s, panel_width * static_cast<float>(i + 1) - 32 * s,
-                         bottom - 76 * s};
+      const PanelBox box{panel_width * static_cast<float>(i) + 80 * s, 130 * s,
+                         panel_width * static_cast<float>(i + 1) - 32 * s, bottom - 76 * s};
       const Range range = value_range(panel);
       p.value_axis(panel.title, range, box);
       p.x_axis(xr, box, figure.x_label);

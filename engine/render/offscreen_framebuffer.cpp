@@ -11,8 +11,8 @@ namespace sc {
 OffscreenFramebuffer::OffscreenFramebuffer(const GlFunctions& gl, int width, int height)
     : gl_(gl), width_(width), height_(height) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    throw InputError("offscreen framebuffer", "size " + std::to_string(width) + "x" + std::to_string(height) +
-                                                  " is outside 1..16384");
+    throw InputError("offscreen framebuffer",
+                     "size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
   gl_.GenRenderbuffers(1, &color_ms_);
   gl_.BindRenderbuffer(GL_RENDERBUFFER, color_ms_);
   gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, kSamples, GL_RGBA8, width, height);
@@ -63,8 +63,7 @@ RgbaImage OffscreenFramebuffer::read() const {
   throw_on_gl_error(gl_, "reading the offscreen framebuffer");
   RgbaImage image(width_, height_);
   const std::size_t row = static_cast<std::size_t>(width_) * 4;
-  for (int y = 0; y < height_; ++y)
-    std::memcpy(image.at(0, y), bottom_up.at(0, height_ - 1 - y), row);
+  for (int y = 0; y < height_; ++y) std::memcpy(image.at(0, y), bottom_up.at(0, height_ - 1 - y), row);
   return image;
 }
 

@@ -49,8 +49,10 @@ OsmesaLibrary open_osmesa() {
   // Never dlclose()d: Mesa registers exit-time handlers, and unloading it under a live context crashes.
   void* library = dlopen(kLibrary, RTLD_NOW | RTLD_LOCAL);
   if (library == nullptr)
-    throw InputError(kLibrary, "cannot load the OSMesa offscreen renderer (install libosmesa6, or use "
-                               "SKILLCOACH_GL=egl): " + one_line(dlerror()));
+    throw InputError(kLibrary,
+                     "cannot load the OSMesa offscreen renderer (install libosmesa6, or use "
+                     "SKILLCOACH_GL=egl): " +
+                         one_line(dlerror()));
   OsmesaLibrary lib;
   lib.create_context_attribs = symbol<CreateContextAttribsFn>(library, "OSMesaCreateContextAttribs");
   lib.destroy_context = symbol<DestroyContextFn>(library, "OSMesaDestroyContext");
@@ -62,8 +64,19 @@ OsmesaLibrary open_osmesa() {
 class OsmesaContext final : public OffscreenGlContext {
  public:
   OsmesaContext(int width, int height) : lib_(open_osmesa()) {
-    const int attribs[] = {kOsmesaFormat, GL_RGBA, kOsmesaDepthBits, 24, kOsmesaStencilBits, 8,
-                           kOsmesaProfile, kOsmesaCoreProfile, kOsmesaMajorVersion, 3, kOsmesaMinorVersion, 3, 0};
+    const int attribs[] = {kOsmesaFormat,
+                           GL_RGBA,
+                           kOsmesaDepthBits,
+                           24,
+                           kOsmesaStencilBits,
+                           8,
+                           kOsmesaProfile,
+                           kOsmesaCoreProfile,
+                           kOsmesaMajorVersion,
+                           3,
+                           kOsmesaMinorVersion,
+                           3,
+                           0};
     context_ = lib_.create_context_attribs(attribs, nullptr);
     if (context_ == nullptr) throw InputError(kLibrary, "OSMesaCreateContextAttribs failed for OpenGL 3.3 core");
     allocate(width, height);

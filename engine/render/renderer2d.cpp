@@ -111,7 +111,8 @@ void Renderer2D::push(const Triangles& world_triangles, Color color, int stencil
     vertices_.push_back({px.x, px.y, abgr});
   }
   const PixelViewport& clip = camera_.viewport();
-  if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 && same_clip(batches_.back().clip, clip)) {
+  if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 &&
+      same_clip(batches_.back().clip, clip)) {
     batches_.back().count += world_triangles.size();
   } else {
     batches_.push_back({first, world_triangles.size(), clip, stencil_ref});

@@ -27,8 +27,8 @@ void write_png(const std::filesystem::path& file, const RgbaImage& image) {
   const auto append = [](void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
   };
-  const int ok = stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.pixels.data(),
-                                        image.width * 4);
+  const int ok =
+      stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.pixels.data(), image.width * 4);
   if (ok == 0) throw InputError(file.string(), "could not encode the PNG");
   write_output_file(file, bytes);
 }

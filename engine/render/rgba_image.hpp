@@ -14,9 +14,7 @@ struct RgbaImage {
   RgbaImage() = default;
   RgbaImage(int w, int h) : width(w), height(h), pixels(static_cast<std::size_t>(w) * h * 4, 0) {}
   std::uint8_t* at(int x, int y) { return pixels.data() + (static_cast<std::size_t>(y) * width + x) * 4; }
-  const std::uint8_t* at(int x, int y) const {
-    return pixels.data() + (static_cast<std::size_t>(y) * width + x) * 4;
-  }
+  const std::uint8_t* at(int x, int y) const { return pixels.data() + (static_cast<std::size_t>(y) * width + x) * 4; }
 };
 
 // Writes a PNG, creating parent folders; throws InputError naming the file on failure.

@@ -17,10 +17,10 @@ class SdlWindowContext final : public GlContext {
 
   std::string_view backend_name() const override { return "sdl"; }
   void make_current() override;
-  int width() const override;   // drawable pixels
+  int width() const override;  // drawable pixels
   int height() const override;
   GLuint target_framebuffer() const override { return 0; }
-  void present() override;      // swaps buffers
+  void present() override;         // swaps buffers
   RgbaImage read_rgba() override;  // back buffer; call before present()
   void resize(int, int) override {}
 

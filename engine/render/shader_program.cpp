@@ -62,7 +62,8 @@ ShaderProgram::ShaderProgram(const GlFunctions& gl, std::string_view vertex_file
     char log[1024] = {};
     gl.GetProgramInfoLog(program_, sizeof log, nullptr, log);
     gl.DeleteProgram(program_);
-    throw InputError(std::string(vertex_file) + " + " + std::string(fragment_file), "shaders do not link: " + one_line(log));
+    throw InputError(std::string(vertex_file) + " + " + std::string(fragment_file),
+                     "shaders do not link: " + one_line(log));
   }
 }
 

@@ -28,7 +28,7 @@ void quad(Triangles& out, Vec2f a, Vec2f b, Vec2f c, Vec2f d) {  // a-b-c-d arou
 // Fan of triangles around `center` sweeping from direction `from` by `sweep` radians.
 void append_arc_fan(Triangles& out, Vec2f center, float radius, Vec2f from, float sweep, float max_chord_error) {
   const int full = circle_segments(radius, max_chord_error);
-  const int steps = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) / (2 * std::numbers::pi_v<float>) * full)));
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) / (2 * std::numbers::pi_v<float>)*full)));
   const float start = std::atan2(from.y, from.x);
   Vec2f previous = center + Vec2f{std::cos(start), std::sin(start)} * radius;
   for (int i = 1; i <= steps; ++i) {
@@ -53,7 +53,7 @@ void append_join(Triangles& out, Vec2f pivot, Vec2f dir_in, Vec2f dir_out, float
                  float max_chord_error) {
   const float turn = cross(dir_in, dir_out);
   if (std::fabs(turn) < 1e-6f && dot(dir_in, dir_out) > 0) return;  // straight on: the quads already meet
-  const float side = turn > 0 ? -1.0f : 1.0f;                        // the outer side of the bend
+  const float side = turn > 0 ? -1.0f : 1.0f;                       // the outer side of the bend
   const Vec2f n_in = left_normal(dir_in) * side, n_out = left_normal(dir_out) * side;
   const Vec2f a = pivot + n_in * half, b = pivot + n_out * half;
   if (style.join == LineJoin::round) {

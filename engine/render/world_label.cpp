@@ -16,11 +16,20 @@ void draw_world_label(const Camera2D& camera, Vec2f world, std::string_view text
   const float gap = style.offset_pixels;
   ImVec2 top_left(p.x - extent.x * 0.5f, p.y - extent.y * 0.5f);
   switch (style.anchor) {
-    case LabelAnchor::center: break;
-    case LabelAnchor::above: top_left.y = p.y - gap - extent.y; break;
-    case LabelAnchor::below: top_left.y = p.y + gap; break;
-    case LabelAnchor::left: top_left.x = p.x - gap - extent.x; break;
-    case LabelAnchor::right: top_left.x = p.x + gap; break;
+    case LabelAnchor::center:
+      break;
+    case LabelAnchor::above:
+      top_left.y = p.y - gap - extent.y;
+      break;
+    case LabelAnchor::below:
+      top_left.y = p.y + gap;
+      break;
+    case LabelAnchor::left:
+      top_left.x = p.x - gap - extent.x;
+      break;
+    case LabelAnchor::right:
+      top_left.x = p.x + gap;
+      break;
   }
   // Whole pixels keep glyphs crisp (the atlas is rasterised for pixel-aligned drawing).
   top_left = ImVec2(std::floor(top_left.x), std::floor(top_left.y));

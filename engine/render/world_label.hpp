@@ -16,9 +16,9 @@ enum class LabelAnchor { center, above, below, left, right };
 struct LabelStyle {
   Color color = Color::hex(0xffffff);
   LabelAnchor anchor = LabelAnchor::center;
-  float offset_pixels = 6;               // gap between the point and the text for non-centre anchors
-  ImFont* font = nullptr;                // nullptr: the current ImGui font
-  Color background = Color::hex(0, 0);   // alpha > 0 draws a rounded plate behind the text
+  float offset_pixels = 6;              // gap between the point and the text for non-centre anchors
+  ImFont* font = nullptr;               // nullptr: the current ImGui font
+  Color background = Color::hex(0, 0);  // alpha > 0 draws a rounded plate behind the text
 };
 
 void draw_world_label(const Camera2D& camera, Vec2f world, std::string_view text, const LabelStyle& style = {},

@@ -28,8 +28,8 @@ float row_height(const ExpertiseChart& chart, float scale, float bar) {
 }  // namespace
 
 float expertise_chart_height(const ExpertiseChart& chart, float scale) {
-  return ImGui::GetFontSize() * 3.5f + row_height(chart, scale, 14.0f * scale) * static_cast<float>(chart.skills.size()) +
-         8.0f * scale;
+  return ImGui::GetFontSize() * 3.5f +
+         row_height(chart, scale, 14.0f * scale) * static_cast<float>(chart.skills.size()) + 8.0f * scale;
 }
 
 void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const ExpertiseChart& chart, float scale,
@@ -49,7 +49,8 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   float x = left;
   for (std::size_t r = 0; r < chart.rounds.size(); ++r) {
     const float a = 0.45f + 0.55f * static_cast<float>(r + 1) / static_cast<float>(chart.rounds.size());
-    dl.AddRectFilled({x, y + fs * 0.2f}, {x + fs * 0.9f, y + fs * 0.9f}, IM_COL32(200, 205, 215, static_cast<int>(255 * a)), 2.0f);
+    dl.AddRectFilled({x, y + fs * 0.2f}, {x + fs * 0.9f, y + fs * 0.9f},
+                     IM_COL32(200, 205, 215, static_cast<int>(255 * a)), 2.0f);
     dl.AddText({x + fs * 1.2f, y}, kMuted, chart.rounds[r].c_str());
     x += fs * 1.2f + ImGui::CalcTextSize(chart.rounds[r].c_str()).x + fs;
   }

@@ -67,7 +67,8 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         dl.AddText({x + fs * 2.2f, y}, kText, "this trial, coloured by skill; dots: boundaries");
         y += fs * 1.35f;
         if (picture.expert) {
-          dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kExpertRibbon.with_alpha(0.8f)), fs * 0.8f);
+          dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kExpertRibbon.with_alpha(0.8f)),
+                     fs * 0.8f);
           dl.AddText({x + fs * 2.2f, y}, kText, parking ? "expert's path (same scenario)" : "expert's pen path");
           y += fs * 1.35f;
         }
@@ -87,8 +88,8 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         }
         const float plot_h = std::min(180.0f * s, static_cast<float>(height) - y - 24.0f * s);
         if (!text.plot.rewards.empty() && plot_h > 80.0f * s)
-          draw_reward_plot(dl, {x - 6.0f * s, static_cast<float>(height) - plot_h - 12.0f * s}, {panel - 16.0f * s, plot_h},
-                           text.plot, s);
+          draw_reward_plot(dl, {x - 6.0f * s, static_cast<float>(height) - plot_h - 12.0f * s},
+                           {panel - 16.0f * s, plot_h}, text.plot, s);
       });
 }
 
@@ -117,7 +118,8 @@ RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture
         dl.AddText({x + fs * 2.2f, y}, kText, before.c_str());
         const std::string after = "after: " + std::to_string(picture.after.size()) +
                                   (picture.after.size() == 1 ? " evaluation trial" : " evaluation trials");
-        dl.AddLine({x + box_w * 0.5f, y + fs * 0.5f}, {x + box_w * 0.5f + fs * 1.6f, y + fs * 0.5f}, to_u32(kAfter), 4.0f * s);
+        dl.AddLine({x + box_w * 0.5f, y + fs * 0.5f}, {x + box_w * 0.5f + fs * 1.6f, y + fs * 0.5f}, to_u32(kAfter),
+                   4.0f * s);
         dl.AddText({x + box_w * 0.5f + fs * 2.2f, y}, kText, after.c_str());
         y += fs * 1.3f;
         text_lines(dl, {x, y}, lines, box_w - 16.0f * s);
@@ -140,10 +142,12 @@ RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart&
       [&](ImGuiLayer& imgui) {
         ImDrawList& dl = *ImGui::GetBackgroundDrawList();
         const float scale = imgui.scale();
-        dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f * scale, 12.0f * scale}, kText, title.c_str());
-        draw_expertise_chart(dl, {12.0f * scale, title_h * scale},
-                             {static_cast<float>(width) - 24.0f * scale, static_cast<float>(image_height) - (title_h + 12.0f) * scale},
-                             chart, scale * s, imgui.fonts().bold);
+        dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f * scale, 12.0f * scale}, kText,
+                   title.c_str());
+        draw_expertise_chart(
+            dl, {12.0f * scale, title_h * scale},
+            {static_cast<float>(width) - 24.0f * scale, static_cast<float>(image_height) - (title_h + 12.0f) * scale},
+            chart, scale * s, imgui.fonts().bold);
       });
 }
 

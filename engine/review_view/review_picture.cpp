@@ -31,7 +31,9 @@ void include(WorldRect& box, Vec2f p) {
   box.max_y = std::max(box.max_y, p.y);
 }
 
-ParkingScenario parking_scenario(const Json& scenario) { return parse_parking_scenario(JsonView(scenario, "review scenario")); }
+ParkingScenario parking_scenario(const Json& scenario) {
+  return parse_parking_scenario(JsonView(scenario, "review scenario"));
+}
 
 Camera2D fit(WorldRect box, PixelViewport viewport) {
   box.min_x -= kParkingMargin;
@@ -42,7 +44,10 @@ Camera2D fit(WorldRect box, PixelViewport viewport) {
   // Widen the box to the viewport's aspect so the camera keeps the scale the same in x and y.
   float w = std::max(box.max_x - box.min_x, kMinParkingWidth), h = box.max_y - box.min_y;
   const float aspect = viewport.width / viewport.height;
-  if (w / h < aspect) w = h * aspect; else h = w / aspect;
+  if (w / h < aspect)
+    w = h * aspect;
+  else
+    h = w / aspect;
   return Camera2D({cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2}, viewport, WorldYAxis::down);
 }
 
@@ -64,9 +69,9 @@ struct TaskLook {
   bool paper = false;          // writing paper under everything; else the parking lot and its goals
   float expert_ribbon = 2.0f;  // the car's width / a wide pen band
   float before_after_ribbon = 2.0f;
-  float ghost_lane = 2.0f;     // a faint lane under the drill's dashes
-  Color ghost = kGhostDrill;   // white dashes read on the grey lot, dark ones on the paper
-  bool car_marker = true;      // the playhead is the car (with headings); else a round pen tip
+  float ghost_lane = 2.0f;    // a faint lane under the drill's dashes
+  Color ghost = kGhostDrill;  // white dashes read on the grey lot, dark ones on the paper
+  bool car_marker = true;     // the playhead is the car (with headings); else a round pen tip
 };
 
 TaskLook look_of(TaskKind task) {
@@ -92,7 +97,8 @@ std::span<const Vec2f> span_points(const ReviewPath& path, const PathSpan& span)
   const int n = static_cast<int>(path.points.size());
   const int begin = std::clamp(span.begin, 0, n - 1);
   const int end = std::clamp(span.end, begin, n - 1);
-  return std::span<const Vec2f>(path.points).subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin + 1));
+  return std::span<const Vec2f>(path.points)
+      .subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin + 1));
 }
 
 // The path in skill colours over a dark casing, with a bead at every boundary between two skills.

@@ -21,14 +21,14 @@ struct PathSpan {
 };
 
 struct ReviewPath {
-  std::vector<Vec2f> points;     // T + 1 positions (before each step, then the end)
-  std::vector<float> headings;   // parking: per point (radians); empty for writing
-  std::vector<PathSpan> spans;   // skill segments; empty: drawn in one colour
+  std::vector<Vec2f> points;    // T + 1 positions (before each step, then the end)
+  std::vector<float> headings;  // parking: per point (radians); empty for writing
+  std::vector<PathSpan> spans;  // skill segments; empty: drawn in one colour
 };
 
 struct TrialPicture {
   TaskKind task = TaskKind::parking;
-  Json scenario;                     // the learner's scenario (lot and goal, or the word's canvas)
+  Json scenario;  // the learner's scenario (lot and goal, or the word's canvas)
   ReviewPath learner;
   std::optional<ReviewPath> expert;  // wide translucent ribbon under everything, thin skill-coloured core
   std::optional<ReviewPath> ghost;   // the drill the learner practised: dashed white

@@ -57,7 +57,7 @@ class GlyphSet {
 
  private:
   AlphabetKind kind_ = AlphabetKind::Classic;
-  DrawerChoice drawers_;            // the effective drawer of every character symbol
+  DrawerChoice drawers_;  // the effective drawer of every character symbol
   std::map<char, Glyph> glyphs_;
 };
 

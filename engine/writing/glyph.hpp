@@ -12,7 +12,7 @@
 
 namespace sc::writing {
 
-inline constexpr double kScaleWidth = 100.0;      // DRAWING_SCALE_WIDTH: characters are 100 px wide
+inline constexpr double kScaleWidth = 100.0;             // DRAWING_SCALE_WIDTH: characters are 100 px wide
 inline constexpr std::size_t kMinCharacterPoints = 380;  // DRAWING_TRAJ_LEN: padding target (§2.4 step 5)
 
 // One action: a relative pen move in canvas pixels; pen = true draws ink, false moves the lifted pen.
@@ -25,8 +25,8 @@ struct WritingStep {
 
 struct Glyph {
   char symbol = '?';
-  std::string source;               // e.g. "character02/0109_04.txt", or "connector"
-  std::vector<WritingStep> steps;   // starts at the pen position where the previous symbol ended
+  std::string source;              // e.g. "character02/0109_04.txt", or "connector"
+  std::vector<WritingStep> steps;  // starts at the pen position where the previous symbol ended
 };
 
 // Classic preprocessing up to step 5 (absolute image coordinates, before taking differences).

@@ -36,8 +36,8 @@ class PenRecorder {
   PenRecorder(double start_time, PenRecorderRules rules);
 
   void add(const PenSample& sample);
-  void done(double time);          // the learner pressed "done"
-  void tick(double time);          // a frame without input: only checks the time limit
+  void done(double time);  // the learner pressed "done"
+  void tick(double time);  // a frame without input: only checks the time limit
 
   bool ended() const { return end_ != TrialEnd::NotEnded; }
   TrialEnd end_reason() const { return end_; }

@@ -16,9 +16,9 @@ inline constexpr int kWritingStateDim = 3 + kMaxWordSymbols;
 struct WritingStepData {
   int state_dim = kWritingStateDim;
   int action_dim = 2;
-  std::vector<float> states;            // T x state_dim, row-major
-  std::vector<float> actions;           // T x action_dim, row-major
-  std::vector<int> character_starts;    // action index where each symbol begins (expert words only)
+  std::vector<float> states;          // T x state_dim, row-major
+  std::vector<float> actions;         // T x action_dim, row-major
+  std::vector<int> character_starts;  // action index where each symbol begins (expert words only)
   int length() const { return action_dim > 0 ? static_cast<int>(actions.size()) / action_dim : 0; }
 };
 

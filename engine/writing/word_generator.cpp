@@ -6,9 +6,9 @@
 namespace sc::writing {
 
 const std::vector<WeightedNgram>& classic_sixgrams() {
-  static const std::vector<WeightedNgram> table = {
-      {"c-a-t-", .05}, {"b-a-t-", .20}, {"b-e-a-", .10}, {"t-e-a-", .10}, {"e-a-t-", .10},
-      {"a-t-^-", .10}, {"-e-a-^", .10}, {"--b-a-", .10}, {"-a--t-", .10}, {"-e-^a-", .05}};
+  static const std::vector<WeightedNgram> table = {{"c-a-t-", .05}, {"b-a-t-", .20}, {"b-e-a-", .10}, {"t-e-a-", .10},
+                                                   {"e-a-t-", .10}, {"a-t-^-", .10}, {"-e-a-^", .10}, {"--b-a-", .10},
+                                                   {"-a--t-", .10}, {"-e-^a-", .05}};
   return table;
 }
 

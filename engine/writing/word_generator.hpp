@@ -1,7 +1,8 @@
 #pragma once
 // Training/practice words.
 //  * classic: the reference's generator (§2.6): each iteration yields TWO 8-symbol words, (sixgram + bigram)
-//    then (bigram + sixgram), all four n-grams drawn independently from fixed distributions. Seeded with sc::Rng, so the distribution matches the reference but not numpy's stream.
+//    then (bigram + sixgram), all four n-grams drawn independently from fixed distributions. Seeded with sc::Rng, so
+//    the distribution matches the reference but not numpy's stream.
 //  * balinese (our extension): 2..4 random characters A..X joined by connectors ('-' 3/4, '^' 1/4); words
 //    with 4 characters use '-' only so that they fit the 500 px canvas.
 #include <string>

@@ -11,9 +11,9 @@
 namespace sc::writing {
 
 struct WritingScenario {
-  std::string word;                               // e.g. "ab-c" (classic) or "B-H^L" (balinese)
+  std::string word;  // e.g. "ab-c" (classic) or "B-H^L" (balinese)
   AlphabetKind alphabet = AlphabetKind::Classic;
-  DrawerChoice drawers;                           // balinese only: {'B': 4} = character02 after drawer 4
+  DrawerChoice drawers;  // balinese only: {'B': 4} = character02 after drawer 4
   bool operator==(const WritingScenario&) const = default;
 };
 
@@ -22,8 +22,10 @@ struct WritingScenario {
 WritingScenario parse_writing_scenario(const JsonView& node);
 Json writing_scenario_json(const WritingScenario& scenario);
 
-GlyphSet load_scenario_glyphs(const WritingScenario& scenario, const std::filesystem::path& data_dir = omniglot_data_dir());
-WordTrajectory gold_trajectory(const WritingScenario& scenario, const std::filesystem::path& data_dir = omniglot_data_dir());
+GlyphSet load_scenario_glyphs(const WritingScenario& scenario,
+                              const std::filesystem::path& data_dir = omniglot_data_dir());
+WordTrajectory gold_trajectory(const WritingScenario& scenario,
+                               const std::filesystem::path& data_dir = omniglot_data_dir());
 
 // Time rules. The paper gives learners a time limit "proportional to the length of the sequence" without
 // numbers; ours: 15 ms per gold step (3x the expert's pace below), at least 3 s. A classic 8-symbol word

@@ -20,7 +20,8 @@ double total_ink_length(const std::vector<TracePoint>& trace) {
 class PointGrid {
  public:
   PointGrid(const std::vector<Point2>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cell_of(points[i].x), cell_of(points[i].y))].push_back(i);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      cells_[key(cell_of(points[i].x), cell_of(points[i].y))].push_back(i);
   }
 
   // Distance to the nearest point, or +inf when none is within `cell`; stops early once <= `good_enough`.

@@ -25,17 +25,17 @@
 namespace sc::writing {
 
 struct WritingScoreParams {
-  double tolerance_px = 3.0;        // full credit band around the gold ink
-  double cutoff_px = 8.0;           // no credit from here on
-  double spacing_px = 0.5;          // arc-length resampling step
-  std::size_t max_samples = 400000; // per ink set; longer ink is resampled more coarsely
+  double tolerance_px = 3.0;         // full credit band around the gold ink
+  double cutoff_px = 8.0;            // no credit from here on
+  double spacing_px = 0.5;           // arc-length resampling step
+  std::size_t max_samples = 400000;  // per ink set; longer ink is resampled more coarsely
 };
 
 struct WritingScore {
-  double score = -1.0;      // recall * precision - 1
+  double score = -1.0;  // recall * precision - 1
   double recall = 0.0;
   double precision = 0.0;
-  double f_measure = 0.0;   // 2PR / (P + R), for reference
+  double f_measure = 0.0;  // 2PR / (P + R), for reference
   double gold_ink_px = 0.0;
   double learner_ink_px = 0.0;
   std::size_t gold_samples = 0;

@@ -69,8 +69,7 @@ Json writing_trial_json(const WritingTrial& trial) {
   bool all_pen = true;
   for (const auto& p : trial.points) all_pen = all_pen && p.pen;
   Json points = Json::array();
-  for (const auto& p : trial.points)
-    points.push_back(all_pen ? Json{p.x, p.y} : Json{p.x, p.y, p.pen ? 1 : 0});
+  for (const auto& p : trial.points) points.push_back(all_pen ? Json{p.x, p.y} : Json{p.x, p.y, p.pen ? 1 : 0});
   Json doc{{"task", "writing"}, {"scenario", writing_scenario_json(trial.scenario)}, {"points", points}};
   if (!trial.times.empty()) doc["t"] = trial.times;
   if (trial.score) doc["score"] = *trial.score;

@@ -26,7 +26,7 @@ inline constexpr double kMaxCoordinate = 10000.0;       // px; the canvas is 500
 struct WritingTrial {
   WritingScenario scenario;
   std::vector<TracePoint> points;
-  std::vector<double> times;          // "t": empty, or one time stamp (seconds) per point
+  std::vector<double> times;  // "t": empty, or one time stamp (seconds) per point
   std::optional<double> score;
   std::string source;                 // "learner", "expert", ...
   std::string device;                 // "mouse", "trackpad", ...

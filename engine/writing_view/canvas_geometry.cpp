@@ -47,8 +47,10 @@ InkPaths split_ink(std::span<const writing::TracePoint> trace) {
       if (chain.empty() || !same_position(trace[k], trace[k - 1])) chain.push_back(vec(trace[k]));
     }
     if (pen) {
-      if (moves) paths.runs.push_back(std::move(chain));
-      else paths.dots.push_back(chain.front());
+      if (moves)
+        paths.runs.push_back(std::move(chain));
+      else
+        paths.dots.push_back(chain.front());
     } else if (moves) {
       paths.hops.push_back(std::move(chain));
     }

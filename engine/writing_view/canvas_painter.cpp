@@ -64,18 +64,22 @@ void paint_guide(Renderer2D& renderer, std::span<const writing::TracePoint> gold
   // A ghost ribbon rather than a polyline: a translucent line that crosses itself would darken at every
   // crossing, and the guide should read as one even, faint word.
   const InkPaths paths = split_ink(gold);
-  for (const auto& run : paths.runs) renderer.ghost_ribbon(run, Stroke::world(look.guide_width), look.guide, round_path());
+  for (const auto& run : paths.runs)
+    renderer.ghost_ribbon(run, Stroke::world(look.guide_width), look.guide, round_path());
   for (const Vec2f dot : paths.dots) renderer.fill_circle(dot, look.guide_width * 0.5f, look.guide);
 }
 
-void paint_learner_ink(Renderer2D& renderer, std::span<const writing::TracePoint> trace, const WritingCanvasLook& look) {
+void paint_learner_ink(Renderer2D& renderer, std::span<const writing::TracePoint> trace,
+                       const WritingCanvasLook& look) {
   paint_ink(renderer, trace, look.ink, look.ink_width);
 }
 
-void paint_drill_ribbon(Renderer2D& renderer, std::span<const writing::TracePoint> path, const WritingCanvasLook& look) {
+void paint_drill_ribbon(Renderer2D& renderer, std::span<const writing::TracePoint> path,
+                        const WritingCanvasLook& look) {
   if (path.empty()) return;
   const InkPaths paths = split_ink(path);
-  for (const auto& run : paths.runs) renderer.ghost_ribbon(run, Stroke::world(look.ribbon_width), look.ribbon, round_path());
+  for (const auto& run : paths.runs)
+    renderer.ghost_ribbon(run, Stroke::world(look.ribbon_width), look.ribbon, round_path());
   for (const Vec2f dot : paths.dots) renderer.fill_circle(dot, look.ribbon_width * 0.5f, look.ribbon);
   paint_hops(renderer, paths.hops, look.ribbon_hop, 1.4f);
   const ArrowHead head{look.arrow_length * 0.5f, look.arrow_length * 0.55f};
@@ -91,7 +95,8 @@ void paint_ghost_pen(Renderer2D& renderer, const GhostPenFrame& frame, const Wri
   if (frame.written.empty()) return;
   const InkPaths paths = split_ink(frame.written);
   paint_hops(renderer, paths.hops, look.ghost_hop, 1.4f);
-  for (const auto& run : paths.runs) renderer.polyline(run, Stroke::world(look.ghost_ink_width), look.ghost_ink, round_path());
+  for (const auto& run : paths.runs)
+    renderer.polyline(run, Stroke::world(look.ghost_ink_width), look.ghost_ink, round_path());
   for (const Vec2f dot : paths.dots) renderer.fill_circle(dot, look.ghost_ink_width * 0.5f, look.ghost_ink);
   if (frame.pen_down) {
     renderer.fill_circle(frame.tip, look.ghost_tip_radius, look.ghost_tip);

@@ -20,17 +20,17 @@
 namespace sc::writing_view {
 
 struct WritingCanvasLook {
-  Color desk = Color::hex(0x2b2f36);           // around the paper
-  Color paper = Color::hex(0xf6f1e4);          // warm off-white
+  Color desk = Color::hex(0x2b2f36);   // around the paper
+  Color paper = Color::hex(0xf6f1e4);  // warm off-white
   Color paper_edge = Color::hex(0xd8d0bc);
-  Color rule = Color::hex(0xb9cbe0, 0.45f);    // faint ruled lines every kRuleSpacing
-  Color baseline = Color::hex(0x9fb6d3, 0.8f); // y = 150, where every word starts
+  Color rule = Color::hex(0xb9cbe0, 0.45f);     // faint ruled lines every kRuleSpacing
+  Color baseline = Color::hex(0x9fb6d3, 0.8f);  // y = 150, where every word starts
   Color start_mark = Color::hex(0x6f8fb8, 0.9f);
   float rule_spacing = 50.0f;
 
-  Color guide = Color::hex(0x8f8a80, 0.30f);   // the goal word underneath (as in the paper's interface)
-  float guide_width = 7.0f;                    // about the score's full-credit band (+-3 px)
-  Color ink = Color::hex(0x1b2a4e);            // the learner's pen
+  Color guide = Color::hex(0x8f8a80, 0.30f);  // the goal word underneath (as in the paper's interface)
+  float guide_width = 7.0f;                   // about the score's full-credit band (+-3 px)
+  Color ink = Color::hex(0x1b2a4e);           // the learner's pen
   float ink_width = 2.6f;
 
   Color ribbon = Color::hex(0x2f7de1, 0.26f);  // a drill's ghost path

@@ -37,8 +37,8 @@ class CanvasPenInput {
 
   // One motion/button event or one frame's polled state. `may_press`: the UI does not own the mouse.
   void feed(const PointerSample& sample, const Camera2D& camera, bool may_press = true);
-  void done(double time);  // ends the trial now (even before any ink: an empty trial)
-  void tick(double time);  // once per frame: the time limit
+  void done(double time);    // ends the trial now (even before any ink: an empty trial)
+  void tick(double time);    // once per frame: the time limit
   void pause(double time);   // no-op when already paused
   void resume(double time);  // no-op when not paused
   bool paused() const { return paused_at_.has_value(); }

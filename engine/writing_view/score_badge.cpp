@@ -17,9 +17,7 @@ ImVec2 text_size(ImFont* font, std::string_view text) {
 
 }  // namespace
 
-int score_points(double score) {
-  return static_cast<int>(std::lround(100.0 * (std::clamp(score, -1.0, 0.0) + 1.0)));
-}
+int score_points(double score) { return static_cast<int>(std::lround(100.0 * (std::clamp(score, -1.0, 0.0) + 1.0))); }
 
 double rounded_score(double score) { return std::round(score * 1000.0) / 1000.0 + 0.0; }
 
@@ -30,8 +28,8 @@ std::string score_headline(const writing::WritingScore& score) {
 
 std::string score_details(const writing::WritingScore& score) {
   char text[128];
-  std::snprintf(text, sizeof text, "score %.3f \xc2\xb7 recall %.2f \xc2\xb7 precision %.2f", rounded_score(score.score),
-                score.recall, score.precision);
+  std::snprintf(text, sizeof text, "score %.3f \xc2\xb7 recall %.2f \xc2\xb7 precision %.2f",
+                rounded_score(score.score), score.recall, score.precision);
   return text;
 }
 

@@ -12,9 +12,9 @@ namespace sc::writing_view {
 
 struct ScriptedHand {
   std::uint64_t seed = 1;
-  double wobble_px = 2.5;   // amplitude of the displacement on each axis
-  std::size_t stride = 4;   // keep every stride-th gold point (the gold moves <= 1 px per step)
-  double fraction = 1.0;    // how much of the gold path (by points) is written, in [0, 1]
+  double wobble_px = 2.5;  // amplitude of the displacement on each axis
+  std::size_t stride = 4;  // keep every stride-th gold point (the gold moves <= 1 px per step)
+  double fraction = 1.0;   // how much of the gold path (by points) is written, in [0, 1]
 };
 
 // Pen flags follow the gold (pen-up moves stay pen-up). The first and last kept points are the gold's own

@@ -20,7 +20,7 @@ struct WritingScene {
   std::vector<writing::TracePoint> learner;  // the learner's ink
   std::optional<GhostPenFrame> ghost_pen;    // the expert writing (ghost_pen_at)
   std::optional<writing::WritingScore> score;
-  std::string caption;                       // top-left, e.g. "ab-c  ·  classic"
+  std::string caption;  // top-left, e.g. "ab-c  ·  classic"
 };
 
 // Paints, in this order: paper, guide, ribbon, learner ink, ghost pen. Call after setting a camera made by

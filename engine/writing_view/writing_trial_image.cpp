@@ -35,9 +35,9 @@ RgbaImage render_writing_scene_image(const WritingScene& scene, int width, int h
 }
 
 WritingScene writing_trial_scene(const writing::WritingTrial& trial, const WritingRenderOptions& options) {
-  const writing::WordTrajectory gold =
-      options.data_dir.empty() ? writing::gold_trajectory(trial.scenario)
-                               : writing::gold_trajectory(trial.scenario, options.data_dir);
+  const writing::WordTrajectory gold = options.data_dir.empty()
+                                           ? writing::gold_trajectory(trial.scenario)
+                                           : writing::gold_trajectory(trial.scenario, options.data_dir);
   const std::vector<writing::TracePoint> gold_points = gold.points();
   WritingScene scene;
   if (options.show_guide) scene.guide = gold_points;

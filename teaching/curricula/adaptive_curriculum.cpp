@@ -21,11 +21,12 @@ AdaptiveRound make_round(std::size_t index, ExpertiseEstimate evidence, Expertis
   AdaptiveRound round;
   if (config.budget_steps > 0) {
     Rng rng = Rng(inputs.seed).fork(kAdaptiveStream + index);
-    round.practice = individualized_drill_curriculum(StudyCondition::Adaptive, diagnosis,
-                                                     round_budget(inputs, config), inputs, config, rng);
+    round.practice = individualized_drill_curriculum(StudyCondition::Adaptive, diagnosis, round_budget(inputs, config),
+                                                     inputs, config, rng);
   } else {
     // The first round draws what Ind. Drills draws, so the two arms differ only in the later rounds.
-    Rng rng = index == 0 ? curriculum_rng(inputs, StudyCondition::IndDrills) : Rng(inputs.seed).fork(kAdaptiveStream + index);
+    Rng rng =
+        index == 0 ? curriculum_rng(inputs, StudyCondition::IndDrills) : Rng(inputs.seed).fork(kAdaptiveStream + index);
     round.practice = weak_skill_round(StudyCondition::Adaptive, diagnosis, inputs, config, rng);
   }
   round.evidence = std::move(evidence);
@@ -41,7 +42,8 @@ AdaptiveRound first_adaptive_round(const CurriculumInputs& inputs, const Curricu
 
 AdaptiveRound next_round(const std::vector<AdaptiveRound>& previous, const std::vector<ExpertiseTrial>& new_trials,
                          const CurriculumInputs& inputs, const CurriculumConfig& config) {
-  if (previous.empty()) throw InputError("adaptive curriculum", "next_round needs the previous rounds (start with first_adaptive_round)");
+  if (previous.empty())
+    throw InputError("adaptive curriculum", "next_round needs the previous rounds (start with first_adaptive_round)");
   const int skills = previous.front().evidence.num_skills();
   ExpertiseEstimate evidence = estimate_expertise(new_trials, skills, config.drills.num_targets);
   std::vector<ExpertiseEstimate> rounds;

@@ -95,15 +95,17 @@ std::vector<std::pair<int, int>> practised_skills(PracticeKind kind, const std::
                                                   const CurriculumConfig& config, Rng& rng) {
   auto ranked = teachable_by_frequency(pool, config.min_skill_steps);
   if (kind == PracticeKind::TimeSlice) {
-    for (std::size_t i = ranked.size(); i > 1; --i) std::swap(ranked[i - 1], ranked[static_cast<std::size_t>(rng.below(i))]);
+    for (std::size_t i = ranked.size(); i > 1; --i)
+      std::swap(ranked[i - 1], ranked[static_cast<std::size_t>(rng.below(i))]);
   }
-  if (ranked.size() > static_cast<std::size_t>(config.common_skills)) ranked.resize(static_cast<std::size_t>(config.common_skills));
+  if (ranked.size() > static_cast<std::size_t>(config.common_skills))
+    ranked.resize(static_cast<std::size_t>(config.common_skills));
   return ranked;
 }
 
 // Skills / Time Heuristic: round-robin over the most common skills, a fresh random segment each time.
-ItemStream common_skill_stream(PracticeKind kind, const std::vector<Segmentation>& pool,
-                               const CurriculumConfig& config, Rng& rng) {
+ItemStream common_skill_stream(PracticeKind kind, const std::vector<Segmentation>& pool, const CurriculumConfig& config,
+                               Rng& rng) {
   auto builder = std::make_shared<DrillBuilder>(pool, teaching_drills(config));
   const auto ranked = practised_skills(kind, pool, config, rng);
   auto next_index = std::make_shared<std::size_t>(0);
@@ -132,7 +134,8 @@ ItemStream full_trajectory_stream(const std::vector<Segmentation>& pool, const C
     if (usable.empty()) return std::nullopt;
     if (order->empty()) {  // a new pass: distinct trajectories in a seeded random order
       *order = usable;
-      for (std::size_t i = order->size(); i > 1; --i) std::swap((*order)[i - 1], (*order)[static_cast<std::size_t>(rng.below(i))]);
+      for (std::size_t i = order->size(); i > 1; --i)
+        std::swap((*order)[i - 1], (*order)[static_cast<std::size_t>(rng.below(i))]);
       std::reverse(order->begin(), order->end());  // consumed from the back
     }
     const int e = order->back();
@@ -181,10 +184,14 @@ void require_pool(const std::vector<Segmentation>& pool, std::string_view what, 
 
 std::string_view practice_kind_key(PracticeKind kind) {
   switch (kind) {
-    case PracticeKind::FullTrajectory: return "full-trajectory";
-    case PracticeKind::TimeSlice: return "time-slice";
-    case PracticeKind::Skill: return "skill";
-    case PracticeKind::Drill: return "drill";
+    case PracticeKind::FullTrajectory:
+      return "full-trajectory";
+    case PracticeKind::TimeSlice:
+      return "time-slice";
+    case PracticeKind::Skill:
+      return "skill";
+    case PracticeKind::Drill:
+      return "drill";
   }
   return "?";
 }
@@ -274,9 +281,8 @@ Curriculum weak_skill_round(StudyCondition condition, const ExpertiseEstimate& d
   return out;
 }
 
-Curriculum individualized_drill_curriculum(StudyCondition condition, const ExpertiseEstimate& diagnosis,
-                                           int budget, const CurriculumInputs& inputs,
-                                           const CurriculumConfig& config, Rng& rng) {
+Curriculum individualized_drill_curriculum(StudyCondition condition, const ExpertiseEstimate& diagnosis, int budget,
+                                           const CurriculumInputs& inputs, const CurriculumConfig& config, Rng& rng) {
   require_pool(inputs.expert_skills, "drills are cut from them", condition);
   if (diagnosis.ranking.empty()) {
     throw InputError(std::string(condition_name(condition)) + " curriculum",
@@ -284,9 +290,8 @@ Curriculum individualized_drill_curriculum(StudyCondition condition, const Exper
   }
   const DrillBuilder builder(inputs.expert_skills, config.drills);
   Curriculum out{condition, budget, {}};
-  out.items = fill_budget(drill_stream([&] { return builder.individualized(diagnosis, rng); },
-                                       config.sessions_per_drill),
-                          budget);
+  out.items = fill_budget(
+      drill_stream([&] { return builder.individualized(diagnosis, rng); }, config.sessions_per_drill), budget);
   return out;
 }
 
@@ -297,8 +302,8 @@ std::vector<DrillPlan> teachable_random_drills(const DrillBuilder& builder, cons
                                                int min_steps, Rng& rng) {
   std::vector<DrillPlan> out;
   for (DrillPlan& plan : builder.random_drills(static_cast<int>(builder.offline_ngrams().size()), rng)) {
-    const bool any = std::any_of(plan.ngram.begin(), plan.ngram.end(),
-                                 [&](int m) { return is_teachable(m, pool, min_steps); });
+    const bool any =
+        std::any_of(plan.ngram.begin(), plan.ngram.end(), [&](int m) { return is_teachable(m, pool, min_steps); });
     if (any) out.push_back(std::move(plan));
   }
   return out;
@@ -320,8 +325,9 @@ ItemStream condition_stream(StudyCondition condition, const CurriculumInputs& in
       require_pool(inputs.expert_skills, "drills are cut from them", condition);
       const int min_steps = config.min_skill_steps;
       const std::vector<Segmentation>& pool = inputs.expert_skills;
-      return drill_stream([builder, &pool, min_steps, &rng] { return teachable_random_drills(*builder, pool, min_steps, rng); },
-                          config.sessions_per_drill);
+      return drill_stream(
+          [builder, &pool, min_steps, &rng] { return teachable_random_drills(*builder, pool, min_steps, rng); },
+          config.sessions_per_drill);
     }
   }
 }

@@ -99,8 +99,7 @@ struct CurriculumInputs {
 // The curriculum of a condition (for Adaptive: its first round). Deterministic in inputs.seed.
 // Throws InputError when the condition's material is missing (empty pool, no time slices for Time
 // Heuristic, a pre-test without ranked skills for Ind. Drills / Adaptive).
-Curriculum make_curriculum(StudyCondition condition, const CurriculumInputs& inputs,
-                           const CurriculumConfig& config);
+Curriculum make_curriculum(StudyCondition condition, const CurriculumInputs& inputs, const CurriculumConfig& config);
 
 // config.budget_steps if set, else the reference arm's length: the Ind. Drills round for inputs.pretest.
 int curriculum_budget_steps(const CurriculumInputs& inputs, const CurriculumConfig& config);
@@ -118,8 +117,7 @@ Curriculum weak_skill_round(StudyCondition condition, const ExpertiseEstimate& d
 Rng curriculum_rng(const CurriculumInputs& inputs, StudyCondition condition);
 
 // Ind. Drills filled to `budget` for a diagnosis (explicit budgets only; see above).
-Curriculum individualized_drill_curriculum(StudyCondition condition, const ExpertiseEstimate& diagnosis,
-                                           int budget, const CurriculumInputs& inputs,
-                                           const CurriculumConfig& config, Rng& rng);
+Curriculum individualized_drill_curriculum(StudyCondition condition, const ExpertiseEstimate& diagnosis, int budget,
+                                           const CurriculumInputs& inputs, const CurriculumConfig& config, Rng& rng);
 
 }  // namespace sc

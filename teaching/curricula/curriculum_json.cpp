@@ -8,10 +8,12 @@
 namespace sc {
 
 PracticeKind parse_practice_kind(std::string_view key) {
-  for (PracticeKind k : {PracticeKind::FullTrajectory, PracticeKind::TimeSlice, PracticeKind::Skill, PracticeKind::Drill}) {
+  for (PracticeKind k :
+       {PracticeKind::FullTrajectory, PracticeKind::TimeSlice, PracticeKind::Skill, PracticeKind::Drill}) {
     if (key == practice_kind_key(k)) return k;
   }
-  throw InputError("practice kind '" + std::string(key) + "'", "unknown; expected full-trajectory, time-slice, skill or drill");
+  throw InputError("practice kind '" + std::string(key) + "'",
+                   "unknown; expected full-trajectory, time-slice, skill or drill");
 }
 
 Json curriculum_to_json(const Curriculum& curriculum) {
@@ -51,7 +53,8 @@ Curriculum curriculum_from_json(const JsonView& view) {
       kind.fail(e.what());
     }
     const JsonView targets = v.at("target_skills");
-    for (std::size_t k = 0; k < targets.size(); ++k) item.target_skills.push_back(static_cast<int>(targets.at(k).integer()));
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      item.target_skills.push_back(static_cast<int>(targets.at(k).integer()));
     const long long sessions = v.at("sessions").integer();
     if (sessions < 1) v.at("sessions").fail("must be >= 1");
     item.sessions = static_cast<int>(sessions);

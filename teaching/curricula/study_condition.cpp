@@ -17,24 +17,36 @@ std::string lower(std::string_view text) {
 
 std::string_view condition_name(StudyCondition condition) {
   switch (condition) {
-    case StudyCondition::FullTrajectory: return "Full Trajectory";
-    case StudyCondition::TimeHeuristic: return "Time Heuristic";
-    case StudyCondition::Skills: return "Skills";
-    case StudyCondition::Drills: return "Drills";
-    case StudyCondition::IndDrills: return "Ind. Drills";
-    case StudyCondition::Adaptive: return "Adaptive";
+    case StudyCondition::FullTrajectory:
+      return "Full Trajectory";
+    case StudyCondition::TimeHeuristic:
+      return "Time Heuristic";
+    case StudyCondition::Skills:
+      return "Skills";
+    case StudyCondition::Drills:
+      return "Drills";
+    case StudyCondition::IndDrills:
+      return "Ind. Drills";
+    case StudyCondition::Adaptive:
+      return "Adaptive";
   }
   return "?";
 }
 
 std::string_view condition_key(StudyCondition condition) {
   switch (condition) {
-    case StudyCondition::FullTrajectory: return "full-trajectory";
-    case StudyCondition::TimeHeuristic: return "time-heuristic";
-    case StudyCondition::Skills: return "skills";
-    case StudyCondition::Drills: return "drills";
-    case StudyCondition::IndDrills: return "ind-drills";
-    case StudyCondition::Adaptive: return "adaptive";
+    case StudyCondition::FullTrajectory:
+      return "full-trajectory";
+    case StudyCondition::TimeHeuristic:
+      return "time-heuristic";
+    case StudyCondition::Skills:
+      return "skills";
+    case StudyCondition::Drills:
+      return "drills";
+    case StudyCondition::IndDrills:
+      return "ind-drills";
+    case StudyCondition::Adaptive:
+      return "adaptive";
   }
   return "?";
 }

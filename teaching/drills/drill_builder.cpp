@@ -124,7 +124,8 @@ std::vector<DrillPlan> DrillBuilder::random_drills(int count, Rng& rng) const {
   while (static_cast<int>(out.size()) < count) {
     if (order.empty()) {  // (re)fill and shuffle (Fisher-Yates with our portable Rng)
       for (std::size_t i = 0; i < offline.size(); ++i) order.push_back(i);
-      for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[static_cast<std::size_t>(rng.below(i))]);
+      for (std::size_t i = order.size(); i > 1; --i)
+        std::swap(order[i - 1], order[static_cast<std::size_t>(rng.below(i))]);
     }
     const std::size_t pick = order.back();
     order.pop_back();

@@ -30,7 +30,7 @@ struct DrillConfig {
 
   static DrillConfig parking() { return {3, 1, 7, 1, 1, true}; }  // the paper's Parking values
   static DrillConfig writing() { return {2, 3, 8, 1, 1, true}; }  // the paper's Writing values
-  void validate() const;  // InputError for values < 1
+  void validate() const;                                          // InputError for values < 1
 };
 
 class DrillBuilder {

@@ -7,8 +7,7 @@
 namespace sc {
 namespace {
 
-const StepSequence& checked_expert(const DrillSegment& s, std::size_t index,
-                                   const std::vector<StepSequence>& experts) {
+const StepSequence& checked_expert(const DrillSegment& s, std::size_t index, const std::vector<StepSequence>& experts) {
   const std::string where = "drill segment " + std::to_string(index);
   if (s.expert < 0 || static_cast<std::size_t>(s.expert) >= experts.size()) {
     throw InputError(where, "expert index " + std::to_string(s.expert) + " is outside the " +

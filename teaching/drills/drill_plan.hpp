@@ -26,8 +26,8 @@ struct DrillPlan {
   int repetitions = 1;                 // N_rep: how often the sequence is repeated inside the drill
   std::vector<DrillSegment> segments;  // ngram.size() x repetitions segments, in play order
 
-  int length() const;                  // total action steps
-  std::vector<int> skills() const;     // skill of each segment, in play order
+  int length() const;               // total action steps
+  std::vector<int> skills() const;  // skill of each segment, in play order
   // Start index of each segment in the stitched trajectory (prefix sums of the lengths).
   std::vector<int> segment_starts() const;
   bool operator==(const DrillPlan&) const = default;
@@ -49,12 +49,12 @@ StepSequence concatenate_expert_steps(const DrillPlan& plan, const std::vector<S
 // What the app plays: the stitched trajectory and its ghost path.
 struct PlayableDrill {
   DrillPlan plan;
-  StepSequence steps;                         // states[t] before actions[t]; states[0] = initial state
-  std::vector<float> final_state;             // state after the last action (state_dim values)
+  StepSequence steps;                             // states[t] before actions[t]; states[0] = initial state
+  std::vector<float> final_state;                 // state after the last action (state_dim values)
   std::vector<std::array<double, 2>> ghost_path;  // x, y per state incl. the final one, task units
-  std::vector<int> segment_starts;            // where each plan segment begins in steps
-  double drill_return = 0.0;                  // the task's own return for the stitched trajectory
-  bool success = false;                       // the task's own success criterion for it
+  std::vector<int> segment_starts;                // where each plan segment begins in steps
+  double drill_return = 0.0;                      // the task's own return for the stitched trajectory
+  bool success = false;                           // the task's own success criterion for it
 };
 
 // Implemented by each task (parking, writing); must be deterministic.

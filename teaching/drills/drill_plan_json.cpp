@@ -8,7 +8,8 @@ namespace {
 
 int int_in(const JsonView& v, long long lo, long long hi) {
   const long long x = v.integer();
-  if (x < lo || x > hi) v.fail("value " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  if (x < lo || x > hi)
+    v.fail("value " + std::to_string(x) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return static_cast<int>(x);
 }
 
@@ -19,8 +20,11 @@ Json drill_plan_to_json(const DrillPlan& plan) {
   for (const auto& s : plan.segments) {
     segments.push_back({{"skill", s.skill}, {"expert", s.expert}, {"begin", s.begin}, {"end", s.end}});
   }
-  return {{"target_skill", plan.target_skill}, {"ngram", plan.ngram},           {"ngram_count", plan.ngram_count},
-          {"repetitions", plan.repetitions},   {"segments", std::move(segments)}};
+  return {{"target_skill", plan.target_skill},
+          {"ngram", plan.ngram},
+          {"ngram_count", plan.ngram_count},
+          {"repetitions", plan.repetitions},
+          {"segments", std::move(segments)}};
 }
 
 DrillPlan drill_plan_from_json(const JsonView& view) {

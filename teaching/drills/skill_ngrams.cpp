@@ -7,9 +7,7 @@
 
 namespace sc {
 
-bool SkillNgram::contains(int skill) const {
-  return std::find(skills.begin(), skills.end(), skill) != skills.end();
-}
+bool SkillNgram::contains(int skill) const { return std::find(skills.begin(), skills.end(), skill) != skills.end(); }
 
 SkillNgramTable::SkillNgramTable(const std::vector<Segmentation>& expert_pool, int n) : n_(n) {
   if (n < 1) throw InputError("skill n-grams", "n must be >= 1, got " + std::to_string(n));
@@ -42,8 +40,8 @@ int SkillNgramTable::frequency(const std::vector<int>& skills) const {
   return 0;
 }
 
-std::vector<SkillNgram> SkillNgramTable::most_frequent_containing(
-    int skill, int k, const std::vector<std::vector<int>>& skip) const {
+std::vector<SkillNgram> SkillNgramTable::most_frequent_containing(int skill, int k,
+                                                                  const std::vector<std::vector<int>>& skip) const {
   std::vector<SkillNgram> out;
   for (const auto& g : grams_) {
     if (static_cast<int>(out.size()) >= k) break;

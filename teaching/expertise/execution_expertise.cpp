@@ -36,8 +36,15 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
       const double error = mode == ExpertiseMode::QualityAware ? -kExecutionWeight * et.segments[k].reward / j : 0.0;
       const double delta = std::max(missing, error);
       if (delta <= best.delta) continue;
-      best = {skill, missing >= error ? TargetReason::Missing : TargetReason::LargeError, static_cast<int>(t),
-              static_cast<int>(k + 1), delta, e.begin, e.end, et.segments[k].learner_begin, et.segments[k].learner_end};
+      best = {skill,
+              missing >= error ? TargetReason::Missing : TargetReason::LargeError,
+              static_cast<int>(t),
+              static_cast<int>(k + 1),
+              delta,
+              e.begin,
+              e.end,
+              et.segments[k].learner_begin,
+              et.segments[k].learner_end};
     }
   }
   if (best.delta <= 0.0) {
@@ -51,9 +58,12 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
 
 const char* target_reason_words(TargetReason reason) {
   switch (reason) {
-    case TargetReason::Missing: return "missing";
-    case TargetReason::LargeError: return "done with a large error here";
-    case TargetReason::NoMistake: return "no mistake seen";
+    case TargetReason::Missing:
+      return "missing";
+    case TargetReason::LargeError:
+      return "done with a large error here";
+    case TargetReason::NoMistake:
+      return "no mistake seen";
   }
   return "missing";
 }

@@ -45,9 +45,9 @@ const char* target_reason_words(TargetReason reason);
 struct TargetWhy {
   int skill = 0;
   TargetReason reason = TargetReason::Missing;
-  int trial = 0;             // index into the trials given
-  int position = 0;          // j (1-based) in that trial's expert sequence
-  double delta = 0.0;        // the penalty (>= 0)
+  int trial = 0;                           // index into the trials given
+  int position = 0;                        // j (1-based) in that trial's expert sequence
+  double delta = 0.0;                      // the penalty (>= 0)
   int expert_begin = 0, expert_end = 0;    // the expert's segment
   int learner_begin = 0, learner_end = 0;  // the learner's aligned steps (missing: still the aligned part)
 };

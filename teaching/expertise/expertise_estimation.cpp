@@ -14,13 +14,11 @@ std::string trial_name(std::size_t index, int scenario) {
   return "expertise trial " + std::to_string(index) + " (scenario " + std::to_string(scenario) + ")";
 }
 
-void check_skills(const Segmentation& seg, int num_skills, std::size_t index, int scenario,
-                  const char* whose) {
+void check_skills(const Segmentation& seg, int num_skills, std::size_t index, int scenario, const char* whose) {
   for (const auto& s : seg.segments) {
     if (s.skill < 0 || s.skill >= num_skills) {
-      throw InputError(trial_name(index, scenario),
-                       std::string(whose) + " skill id " + std::to_string(s.skill) + " is outside [0, " +
-                           std::to_string(num_skills) + ")");
+      throw InputError(trial_name(index, scenario), std::string(whose) + " skill id " + std::to_string(s.skill) +
+                                                        " is outside [0, " + std::to_string(num_skills) + ")");
     }
   }
 }
@@ -51,8 +49,7 @@ void rank_expertise(ExpertiseEstimate& estimate, int num_targets) {
   estimate.targets.assign(estimate.ranking.begin(), estimate.ranking.begin() + static_cast<long>(n));
 }
 
-ExpertiseEstimate estimate_expertise(const std::vector<ExpertiseTrial>& trials, int num_skills,
-                                     int num_targets) {
+ExpertiseEstimate estimate_expertise(const std::vector<ExpertiseTrial>& trials, int num_skills, int num_targets) {
   if (num_skills <= 0) throw InputError("expertise estimation", "the number of skills must be > 0");
   ExpertiseEstimate out;
   const auto skills = static_cast<std::size_t>(num_skills);

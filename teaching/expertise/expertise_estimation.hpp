@@ -54,8 +54,7 @@ struct ExpertiseEstimate {
 
 // Alg. 2 over the given trials. num_skills bounds the skill ids (ids must lie in [0, num_skills)).
 // Throws InputError naming the trial for a positive or non-finite reward or an out-of-range skill id.
-ExpertiseEstimate estimate_expertise(const std::vector<ExpertiseTrial>& trials, int num_skills,
-                                     int num_targets);
+ExpertiseEstimate estimate_expertise(const std::vector<ExpertiseTrial>& trials, int num_skills, int num_targets);
 
 // Orders seen skills and fills ranking/targets from expertise and occurrences (rule above).
 void rank_expertise(ExpertiseEstimate& estimate, int num_targets);

@@ -9,7 +9,8 @@ std::vector<int> skill_list(const JsonView& view, int num_skills) {
   std::vector<int> out;
   for (std::size_t i = 0; i < view.size(); ++i) {
     const long long m = view.at(i).integer();
-    if (m < 0 || m >= num_skills) view.at(i).fail("skill id " + std::to_string(m) + " is outside [0, " + std::to_string(num_skills) + ")");
+    if (m < 0 || m >= num_skills)
+      view.at(i).fail("skill id " + std::to_string(m) + " is outside [0, " + std::to_string(num_skills) + ")");
     out.push_back(static_cast<int>(m));
   }
   return out;
@@ -22,13 +23,19 @@ Json expertise_to_json(const ExpertiseEstimate& estimate) {
   for (const auto& per_skill : estimate.contributions) {
     Json list = Json::array();
     for (const auto& c : per_skill) {
-      list.push_back({{"trial", c.trial}, {"scenario", c.scenario}, {"position", c.position}, {"reward", c.reward},
+      list.push_back({{"trial", c.trial},
+                      {"scenario", c.scenario},
+                      {"position", c.position},
+                      {"reward", c.reward},
                       {"delta", c.delta}});
     }
     contributions.push_back(std::move(list));
   }
-  return {{"expertise", estimate.expertise}, {"occurrences", estimate.occurrences}, {"ranking", estimate.ranking},
-          {"targets", estimate.targets},     {"contributions", std::move(contributions)}};
+  return {{"expertise", estimate.expertise},
+          {"occurrences", estimate.occurrences},
+          {"ranking", estimate.ranking},
+          {"targets", estimate.targets},
+          {"contributions", std::move(contributions)}};
 }
 
 ExpertiseEstimate expertise_from_json(const JsonView& view) {
@@ -38,7 +45,8 @@ ExpertiseEstimate expertise_from_json(const JsonView& view) {
   const JsonView contributions = view.at("contributions");
   const std::size_t n = e.size();
   if (occ.size() != n) occ.fail("has " + std::to_string(occ.size()) + " entries, expertise has " + std::to_string(n));
-  if (contributions.size() != n) contributions.fail("has " + std::to_string(contributions.size()) + " entries, expertise has " + std::to_string(n));
+  if (contributions.size() != n)
+    contributions.fail("has " + std::to_string(contributions.size()) + " entries, expertise has " + std::to_string(n));
   for (std::size_t m = 0; m < n; ++m) {
     const double value = e.at(m).number();
     if (value > 0.0) e.at(m).fail("expertise must be <= 0");

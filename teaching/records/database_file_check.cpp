@@ -39,8 +39,8 @@ bool wal_has_content(const std::filesystem::path& file) {
 void check_header(const std::filesystem::path& file, std::uintmax_t size) {
   const std::string where = file.string();
   if (size < kHeaderSize)
-    throw InputError(where, "not a SQLite database or truncated (only " + std::to_string(size) +
-                                " bytes); it was not changed");
+    throw InputError(
+        where, "not a SQLite database or truncated (only " + std::to_string(size) + " bytes); it was not changed");
   std::array<unsigned char, kHeaderSize> header{};
   std::ifstream in(file, std::ios::binary);
   if (!in.read(reinterpret_cast<char*>(header.data()), kHeaderSize)) throw InputError(where, "cannot be read");
@@ -113,8 +113,9 @@ DatabaseFileState check_database_file(const std::filesystem::path& file, int new
     const auto tables = db->query_int("SELECT count(*) FROM sqlite_schema WHERE type = 'table'");
     if (application_id == 0 && version == 0 && tables == 0) return {true, 0};
     if (application_id != static_cast<std::uint32_t>(kSkillCoachApplicationId)) {
-      std::string detail = application_id != 0 ? "application id " + hex32(application_id)
-                                               : std::to_string(tables) + " tables, e.g. '" + first_table_name(*db) + "'";
+      std::string detail = application_id != 0
+                               ? "application id " + hex32(application_id)
+                               : std::to_string(tables) + " tables, e.g. '" + first_table_name(*db) + "'";
       throw InputError(where, "not a SkillCoach database (" + detail + "); it was not changed");
     }
     if (version > newest_version) {
@@ -125,8 +126,8 @@ DatabaseFileState check_database_file(const std::filesystem::path& file, int new
     return {false, version};
   } catch (const SqliteError& e) {
     const bool damaged = e.primary_code() == SQLITE_CORRUPT || e.primary_code() == SQLITE_NOTADB;
-    throw InputError(where, std::string(damaged ? "damaged database (" : "cannot be read (") + e.what() +
-                                "); it was not changed");
+    throw InputError(
+        where, std::string(damaged ? "damaged database (" : "cannot be read (") + e.what() + "); it was not changed");
   }
 }
 

@@ -87,7 +87,7 @@ LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions o
 LearnerStore::~LearnerStore() {
   if (pending_.empty() || options_.read_only) return;
   try {
-    flush();  // on failure the pending writes are already in the spill file
+    flush();       // on failure the pending writes are already in the spill file
   } catch (...) {  // a destructor must not throw; nothing more can be done here
   }
 }
@@ -269,11 +269,11 @@ SaveResult LearnerStore::flush() {
     return {true, 0, {}};
   }
   const auto count = pending_.size();
-  const std::string next = retryable_ ? "will retry on the next save"
-                                      : "retrying cannot help until the database is repaired or moved aside";
+  const std::string next =
+      retryable_ ? "will retry on the next save" : "retrying cannot help until the database is repaired or moved aside";
   return {false, count,
-          path_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") +
-              " not saved yet (" + problem + "); " + spill_pending() + "; " + next};
+          path_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") + " not saved yet (" +
+              problem + "); " + spill_pending() + "; " + next};
 }
 
 bool LearnerStore::try_write_pending(std::string& problem) {
@@ -348,7 +348,7 @@ void LearnerStore::claim_learner(std::string_view name) const {
 }
 
 std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_view learner,
-                                                                std::string_view task) const {
+                                                                 std::string_view task) const {
   claim_learner(learner);
   const auto sessions = read([&](SqliteDb& db) { return query_unfinished_sessions(db, learner, task); });
   for (const auto& row : sessions) {

@@ -31,8 +31,8 @@ namespace sc::records {
 class SqliteDb;
 
 struct StoreOptions {
-  bool read_only = false;         // review/export: never writes (writes stay pending, nothing is spilled)
-  int busy_timeout_ms = 2000;     // how long a write waits for another process's lock before it is queued
+  bool read_only = false;           // review/export: never writes (writes stay pending, nothing is spilled)
+  int busy_timeout_ms = 2000;       // how long a write waits for another process's lock before it is queued
   std::int64_t max_page_count = 0;  // 0: unlimited; otherwise the database behaves as a full disk at that size
 };
 
@@ -88,8 +88,8 @@ class LearnerStore {
   // ---- instructor review (database content only) ----
   std::optional<SessionRow> session(std::int64_t session_id) const;
   std::vector<LearnerOverview> list_learners() const;
-  std::vector<StoredTrial> trials_of_session(std::int64_t session_id) const;  // in seq order
-  std::vector<DiagnosisRecord> diagnoses_of_session(std::int64_t session_id) const;  // by round
+  std::vector<StoredTrial> trials_of_session(std::int64_t session_id) const;          // in seq order
+  std::vector<DiagnosisRecord> diagnoses_of_session(std::int64_t session_id) const;   // by round
   std::vector<CurriculumRecord> curricula_of_session(std::int64_t session_id) const;  // by round, drills by index
 
  private:
@@ -116,8 +116,8 @@ class LearnerStore {
   std::map<std::int64_t, int> last_seq_;  // per session: last seq handed out
   std::string open_message_;
   std::unique_ptr<LearnerLocks> locks_;  // mutable through the pointer: claims are not database content
-  bool spilled_ = false;    // the last spill_pending() wrote every pending write
-  bool retryable_ = true;   // the last failed write was a storage fault (not e.g. a missing table)
+  bool spilled_ = false;                 // the last spill_pending() wrote every pending write
+  bool retryable_ = true;                // the last failed write was a storage fault (not e.g. a missing table)
 };
 
 }  // namespace sc::records

@@ -32,7 +32,8 @@ PendingWrite write_from_json(const JsonView& node) {
   if (type == "trial") return TrialWrite{trial_from_json(node), trial_seq_from_json(node)};
   if (type == "diagnosis") return diagnosis_from_json(node);
   if (type == "curriculum") return curriculum_from_json(node);
-  if (type == "progress") return ProgressWrite{node.at("session_id").integer(), progress_from_json(node.at("progress"))};
+  if (type == "progress")
+    return ProgressWrite{node.at("session_id").integer(), progress_from_json(node.at("progress"))};
   if (type == "finish") return FinishWrite{node.at("session_id").integer(), node.at("finished").string()};
   node.at("type").fail("unknown pending write type \"" + type + "\"");
 }

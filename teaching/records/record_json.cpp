@@ -71,9 +71,12 @@ TrialRecord trial_from_json(const JsonView& node) {
 int trial_seq_from_json(const JsonView& node) { return small_int(node.at("seq")); }
 
 Json diagnosis_to_json(const DiagnosisRecord& diagnosis) {
-  return {{"session_id", diagnosis.session_id},     {"round", diagnosis.round},
-          {"expertise", payload(diagnosis.expertise_json)}, {"targets", payload(diagnosis.targets_json)},
-          {"extractor", diagnosis.extractor},       {"model_id", diagnosis.model_id},
+  return {{"session_id", diagnosis.session_id},
+          {"round", diagnosis.round},
+          {"expertise", payload(diagnosis.expertise_json)},
+          {"targets", payload(diagnosis.targets_json)},
+          {"extractor", diagnosis.extractor},
+          {"model_id", diagnosis.model_id},
           {"created", diagnosis.created}};
 }
 
@@ -95,9 +98,8 @@ Json curriculum_to_json(const CurriculumRecord& curriculum) {
     drills.push_back(
         {{"index", drill.index}, {"skills", payload(drill.skills_json)}, {"content", payload(drill.content_json)}});
   }
-  return {{"session_id", curriculum.session_id}, {"round", curriculum.round},
-          {"condition", curriculum.condition},   {"items", payload(curriculum.items_json)},
-          {"drills", std::move(drills)},         {"created", curriculum.created}};
+  return {{"session_id", curriculum.session_id},     {"round", curriculum.round},   {"condition", curriculum.condition},
+          {"items", payload(curriculum.items_json)}, {"drills", std::move(drills)}, {"created", curriculum.created}};
 }
 
 CurriculumRecord curriculum_from_json(const JsonView& node) {
@@ -110,8 +112,8 @@ CurriculumRecord curriculum_from_json(const JsonView& node) {
   auto drills = node.at("drills");
   for (std::size_t i = 0; i < drills.size(); ++i) {
     auto drill = drills.at(i);
-    curriculum.drills.push_back({small_int(drill.at("index")), payload_text(drill.at("skills")),
-                                 payload_text(drill.at("content"))});
+    curriculum.drills.push_back(
+        {small_int(drill.at("index")), payload_text(drill.at("skills")), payload_text(drill.at("content"))});
   }
   return curriculum;
 }

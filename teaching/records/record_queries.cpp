@@ -75,14 +75,14 @@ std::vector<LearnerOverview> query_learners(SqliteDb& db) {
     learners.push_back({list.column_int(0), list.column_text(1), list.column_text(2), {}});
   }
   // Pre-test mean: first round's pre-test; evaluation mean: the last round that has an evaluation.
-  auto stmt = db.prepare(
-      "SELECT " + std::string(kSessionColumns) +
-      ", (SELECT count(*) FROM trials t WHERE t.session_id = s.id),"
-      " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'pretest' AND t.round ="
-      "   (SELECT min(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'pretest')),"
-      " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'eval' AND t.round ="
-      "   (SELECT max(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'eval')),"
-      " s.learner_id FROM sessions s JOIN learners l ON l.id = s.learner_id ORDER BY s.started, s.id");
+  auto stmt =
+      db.prepare("SELECT " + std::string(kSessionColumns) +
+                 ", (SELECT count(*) FROM trials t WHERE t.session_id = s.id),"
+                 " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'pretest' AND t.round ="
+                 "   (SELECT min(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'pretest')),"
+                 " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'eval' AND t.round ="
+                 "   (SELECT max(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'eval')),"
+                 " s.learner_id FROM sessions s JOIN learners l ON l.id = s.learner_id ORDER BY s.started, s.id");
   while (stmt.step()) {
     SessionSummary summary;
     summary.session = read_session(stmt);
@@ -136,14 +136,15 @@ std::vector<DiagnosisRecord> query_diagnoses(SqliteDb& db, std::int64_t session_
 }
 
 std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session_id) {
-  auto stmt = db.prepare(
-      "SELECT id, round, condition, items, created FROM curricula WHERE session_id = ?1 ORDER BY round");
+  auto stmt =
+      db.prepare("SELECT id, round, condition, items, created FROM curricula WHERE session_id = ?1 ORDER BY round");
   stmt.bind(1, session_id);
   auto drills = db.prepare("SELECT idx, skills, content FROM drills WHERE curriculum_id = ?1 ORDER BY idx");
   std::vector<CurriculumRecord> out;
   while (stmt.step()) {
-    CurriculumRecord c{session_id, static_cast<int>(stmt.column_int(1)), stmt.column_text(2), stmt.column_text(3),
-                       {}, stmt.column_text(4)};
+    CurriculumRecord c{
+        session_id,         static_cast<int>(stmt.column_int(1)), stmt.column_text(2), stmt.column_text(3), {},
+        stmt.column_text(4)};
     drills.bind(1, stmt.column_int(0));
     while (drills.step()) {
       c.drills.push_back({static_cast<int>(drills.column_int(0)), drills.column_text(1), drills.column_text(2)});

@@ -31,12 +31,12 @@ struct SessionProgress {
 };
 
 struct NewSession {
-  std::string learner;    // learner's name; created if new
-  std::string task;       // "parking" or "writing"
-  std::string condition;  // study condition / curriculum name ("adaptive", "ind_drills", ...)
-  std::uint64_t seed = 0; // regenerates the session's scenarios on resume
+  std::string learner;               // learner's name; created if new
+  std::string task;                  // "parking" or "writing"
+  std::string condition;             // study condition / curriculum name ("adaptive", "ind_drills", ...)
+  std::uint64_t seed = 0;            // regenerates the session's scenarios on resume
   std::string settings_json = "{}";  // free-form session settings (N_s, time limits, ...)
-  std::string started;    // ISO-8601 UTC
+  std::string started;               // ISO-8601 UTC
 };
 
 struct TrialRecord {
@@ -45,10 +45,10 @@ struct TrialRecord {
   int round = 1;
   std::optional<int> drill_index;  // demo/practice: index of the drill in the round's curriculum
   std::string task;
-  std::string scenario_json;       // the scenario object of the trajectory file
-  std::string trajectory_json;     // the whole trajectory-file document
-  std::optional<double> score;     // absent for demos
-  std::string device;              // "gamepad", "mouse-joystick", "keyboard", "mouse", "trackpad", ...
+  std::string scenario_json;    // the scenario object of the trajectory file
+  std::string trajectory_json;  // the whole trajectory-file document
+  std::optional<double> score;  // absent for demos
+  std::string device;           // "gamepad", "mouse-joystick", "keyboard", "mouse", "trackpad", ...
   std::string started;
   std::string finished;
   // Where to resume once this trial is kept; written atomically with the trial.
@@ -123,9 +123,9 @@ struct LearnerOverview {
 // Outcome of a write: either kept in the database, or kept pending with a one-line message saying why
 // and where the pending copy is.
 struct SaveResult {
-  bool stored = false;        // this record is in the database
-  std::size_t pending = 0;    // records still waiting for the database (this one included if not stored)
-  std::string message;        // empty when everything is stored
+  bool stored = false;      // this record is in the database
+  std::size_t pending = 0;  // records still waiting for the database (this one included if not stored)
+  std::string message;      // empty when everything is stored
 };
 
 // Current UTC time as "2024-05-01T12:34:56.789Z".

@@ -103,7 +103,8 @@ std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::str
 }
 
 std::int64_t insert_session(SqliteDb& db, std::int64_t learner_id, const NewSession& s) {
-  db.prepare("INSERT INTO sessions(learner_id, task, condition, seed, settings, started) VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
+  db.prepare(
+        "INSERT INTO sessions(learner_id, task, condition, seed, settings, started) VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
       .bind(1, learner_id)
       .bind(2, s.task)
       .bind(3, s.condition)

@@ -25,13 +25,16 @@ class SessionExporter {
     const std::string where = "session " + std::to_string(id) + ", ";
     Json trials = Json::array();
     for (const auto& trial : store_.trials_of_session(id))
-      convert(where + "trial " + std::to_string(trial.seq), [&] { trials.push_back(trial_to_json(trial.record, trial.seq)); });
+      convert(where + "trial " + std::to_string(trial.seq),
+              [&] { trials.push_back(trial_to_json(trial.record, trial.seq)); });
     Json diagnoses = Json::array();
     for (const auto& d : store_.diagnoses_of_session(id))
-      convert(where + "diagnosis of round " + std::to_string(d.round), [&] { diagnoses.push_back(diagnosis_to_json(d)); });
+      convert(where + "diagnosis of round " + std::to_string(d.round),
+              [&] { diagnoses.push_back(diagnosis_to_json(d)); });
     Json curricula = Json::array();
     for (const auto& c : store_.curricula_of_session(id))
-      convert(where + "curriculum of round " + std::to_string(c.round), [&] { curricula.push_back(curriculum_to_json(c)); });
+      convert(where + "curriculum of round " + std::to_string(c.round),
+              [&] { curricula.push_back(curriculum_to_json(c)); });
     out_.trials += trials.size();
     session["trials"] = std::move(trials);
     session["diagnoses"] = std::move(diagnoses);
@@ -83,7 +86,8 @@ void refuse_database_as_output(const LearnerStore& store, const std::filesystem:
     const auto out_name = std::filesystem::weakly_canonical(out, out_ec);
     const auto file_name = std::filesystem::weakly_canonical(file, file_ec);
     const bool same = std::filesystem::equivalent(out, file, ec) || (!out_ec && !file_ec && out_name == file_name);
-    if (same) throw InputError(out.string(), "is the learner database's own file " + file.string() + "; choose another --out");
+    if (same)
+      throw InputError(out.string(), "is the learner database's own file " + file.string() + "; choose another --out");
   }
 }
 

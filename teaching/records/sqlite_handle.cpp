@@ -32,8 +32,7 @@ SqliteStatement& SqliteStatement::bind(int index, std::string_view text) {
   // SQLITE_TRANSIENT: SQLite copies the text, so callers may pass temporaries.
   // An empty string_view may have a null data(), which SQLite would bind as NULL instead of ''.
   const char* data = text.data() != nullptr ? text.data() : "";
-  check_sqlite(db_, sqlite3_bind_text64(stmt_, index, data, text.size(), SQLITE_TRANSIENT, SQLITE_UTF8),
-               "bind");
+  check_sqlite(db_, sqlite3_bind_text64(stmt_, index, data, text.size(), SQLITE_TRANSIENT, SQLITE_UTF8), "bind");
   return *this;
 }
 
@@ -61,8 +60,7 @@ bool SqliteStatement::step() {
 }
 
 void SqliteStatement::run() {
-  while (step()) {
-  }
+  while (step()) {}
 }
 
 std::int64_t SqliteStatement::column_int(int index) const { return sqlite3_column_int64(stmt_, index); }
@@ -164,14 +162,20 @@ void SqliteTransaction::commit() {
 // Plain words for the storage faults a learner may meet; anything else keeps SQLite's own text.
 std::string describe_storage_error(const SqliteError& e) {
   switch (e.primary_code()) {
-    case SQLITE_FULL: return "the disk or the database is full";
-    case SQLITE_READONLY: return "the database is read-only";
+    case SQLITE_FULL:
+      return "the disk or the database is full";
+    case SQLITE_READONLY:
+      return "the database is read-only";
     case SQLITE_BUSY:
-    case SQLITE_LOCKED: return "the database is locked by another program";
-    case SQLITE_IOERR: return std::string("disk I/O error (") + e.what() + ")";
+    case SQLITE_LOCKED:
+      return "the database is locked by another program";
+    case SQLITE_IOERR:
+      return std::string("disk I/O error (") + e.what() + ")";
     case SQLITE_CANTOPEN:
-    case SQLITE_PERM: return "the database file cannot be opened for writing";
-    default: return e.what();
+    case SQLITE_PERM:
+      return "the database file cannot be opened for writing";
+    default:
+      return e.what();
   }
 }
 
@@ -185,8 +189,10 @@ bool is_storage_fault(const SqliteError& e) {
     case SQLITE_LOCKED:
     case SQLITE_IOERR:
     case SQLITE_CANTOPEN:
-    case SQLITE_PERM: return true;
-    default: return false;
+    case SQLITE_PERM:
+      return true;
+    default:
+      return false;
   }
 }
 

@@ -17,7 +17,7 @@ namespace sc::records {
 class SqliteError : public std::runtime_error {
  public:
   SqliteError(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
-  int code() const { return code_; }            // extended result code (e.g. SQLITE_READONLY_DBMOVED)
+  int code() const { return code_; }                 // extended result code (e.g. SQLITE_READONLY_DBMOVED)
   int primary_code() const { return code_ & 0xff; }  // SQLITE_FULL, SQLITE_BUSY, ...
 
  private:

@@ -32,7 +32,8 @@ std::vector<BeforeAfterGroup> before_after_groups(const SessionRecord& record) {
   for (const auto& t : record.trials) {
     const bool pre = t.record.kind == records::TrialKind::Pretest;
     if (!pre && t.record.kind != records::TrialKind::Eval) continue;
-    const std::string where = "session " + std::to_string(record.session.id) + " trial " + std::to_string(t.seq) + " scenario";
+    const std::string where =
+        "session " + std::to_string(record.session.id) + " trial " + std::to_string(t.seq) + " scenario";
     Json scenario;
     try {
       scenario = Json::parse(t.record.scenario_json);

@@ -14,10 +14,10 @@
 namespace sc::review {
 
 struct BeforeAfterGroup {
-  std::string family;              // key, e.g. "parking-lower-left" (file names)
-  std::string title;               // plain words, e.g. "goal in the lower row, left of the start"
-  std::vector<int> pretest_seqs;   // trial seqs, in order
-  std::vector<int> eval_seqs;      // evaluation trials of every round
+  std::string family;             // key, e.g. "parking-lower-left" (file names)
+  std::string title;              // plain words, e.g. "goal in the lower row, left of the start"
+  std::vector<int> pretest_seqs;  // trial seqs, in order
+  std::vector<int> eval_seqs;     // evaluation trials of every round
 };
 
 struct ScenarioFamily {

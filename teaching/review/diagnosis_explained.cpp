@@ -67,10 +67,12 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
   out.stored_targets = stored_targets;
   out.matches_stored = now.num_skills() == before.num_skills() && stored_targets == now.targets;
   for (int m = 0; out.matches_stored && m < now.num_skills(); ++m)
-    out.matches_stored = std::fabs(now.expertise[static_cast<std::size_t>(m)] - before.expertise[static_cast<std::size_t>(m)]) <= 1e-9;
+    out.matches_stored =
+        std::fabs(now.expertise[static_cast<std::size_t>(m)] - before.expertise[static_cast<std::size_t>(m)]) <= 1e-9;
 
   for (int m : out.stored_targets) {
-    if (m < 0 || m >= now.num_skills()) throw InputError(where + " diagnosis", "targets unknown skill " + std::to_string(m));
+    if (m < 0 || m >= now.num_skills())
+      throw InputError(where + " diagnosis", "targets unknown skill " + std::to_string(m));
     SkillExplanation s;
     s.skill = m;
     s.description = review.kit().describe_skill(m);

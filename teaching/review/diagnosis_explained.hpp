@@ -21,15 +21,15 @@ struct MissedSkillTrial {
 struct SkillExplanation {
   int skill = 0;
   std::string description;
-  double expertise = 0.0;  // recomputed E_m = −Σ Δ
-  int occurrences = 0;     // how often the expert used the skill in these scenarios
+  double expertise = 0.0;                // recomputed E_m = −Σ Δ
+  int occurrences = 0;                   // how often the expert used the skill in these scenarios
   std::vector<MissedSkillTrial> missed;  // trial order
 };
 
 struct DiagnosisExplanation {
   int round = 1;
-  std::vector<int> stored_targets;      // as the trainer stored them
-  std::vector<int> recomputed_targets;  // Alg. 2 now
+  std::vector<int> stored_targets;       // as the trainer stored them
+  std::vector<int> recomputed_targets;   // Alg. 2 now
   std::vector<SkillExplanation> skills;  // the stored targets, in their order
   int pretest_trials = 0;
   bool matches_stored = false;  // recomputed expertise equals the stored vector (to 1e-9) with the same targets

@@ -13,8 +13,8 @@ namespace {
 std::vector<int> drilled_in_round(const SessionRecord& record, int round) {
   for (const records::CurriculumRecord& stored : record.curricula) {
     if (stored.round != round) continue;
-    const std::string where = "session " + std::to_string(record.session.id) + " curriculum of round " +
-                              std::to_string(round);
+    const std::string where =
+        "session " + std::to_string(record.session.id) + " curriculum of round " + std::to_string(round);
     const Json doc = parse_json_text(stored.items_json, where);
     std::vector<int> played;
     for (const records::StoredTrial* t : record.trials_of(records::TrialKind::Practice, round))
@@ -35,7 +35,8 @@ ExpertiseRounds expertise_rounds(const TaskKit& kit, const SessionRecord& record
   std::vector<ExpertiseEstimate> estimates;
   std::vector<std::vector<int>> drilled;
   for (const auto& d : record.diagnoses) {
-    const std::string where = "session " + std::to_string(record.session.id) + " diagnosis of round " + std::to_string(d.round);
+    const std::string where =
+        "session " + std::to_string(record.session.id) + " diagnosis of round " + std::to_string(d.round);
     Json expertise;
     try {
       expertise = Json::parse(d.expertise_json);
@@ -58,7 +59,8 @@ ExpertiseRounds expertise_rounds(const TaskKit& kit, const SessionRecord& record
       const auto& e = estimates[r];
       const bool evidence = e.occurrences[static_cast<std::size_t>(m)] > 0;
       seen = seen || evidence;
-      skill.expertise.push_back(evidence ? std::optional<double>(e.expertise[static_cast<std::size_t>(m)]) : std::nullopt);
+      skill.expertise.push_back(evidence ? std::optional<double>(e.expertise[static_cast<std::size_t>(m)])
+                                         : std::nullopt);
       skill.drilled.push_back(std::find(drilled[r].begin(), drilled[r].end(), m) != drilled[r].end());
       if (evidence) out.lowest = std::min(out.lowest, e.expertise[static_cast<std::size_t>(m)]);
     }

@@ -13,7 +13,7 @@ struct PracticeRound {
   int round = 1;
   std::string condition;  // display name, e.g. "Ind. Drills"
   int planned_trials = 0;
-  int steps = 0;          // practice time-steps planned
+  int steps = 0;  // practice time-steps planned
   int budget_steps = 0;
   int played_trials = 0;
 };

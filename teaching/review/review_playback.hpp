@@ -14,7 +14,7 @@ class Playback {
   void play();  // from the start when at the end
   void pause() { playing_ = false; }
   void toggle() { playing_ ? pause() : play(); }
-  void scrub(double position);  // clamped to [0, steps]
+  void scrub(double position);   // clamped to [0, steps]
   void set_speed(double speed);  // clamped to [0.25, 4]
   // Advances by `dt` seconds of wall time; stops at the end.
   void advance(double dt);

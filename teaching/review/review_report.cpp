@@ -49,9 +49,9 @@ void session_header(std::ostringstream& h, const SessionReport& s) {
   h << "<h2>Session " << r.session_id << ": " << html_escape(r.task) << ", " << html_escape(r.condition) << "</h2>\n";
   h << "<table><tr><th>Started</th><th>Finished</th><th>Trials</th><th>Pre-test mean</th><th>Evaluation mean</th>"
        "<th>Improvement</th></tr><tr><td>"
-    << html_escape(cell_text(r, SessionColumn::Date)) << "</td><td>" << (r.finished ? "yes" : "not yet") << "</td><td class=num>"
-    << r.trial_count << "</td><td class=num>" << cell_text(r, SessionColumn::Pretest) << "</td><td class=num>"
-    << cell_text(r, SessionColumn::Evaluation) << "</td><td class=\"num "
+    << html_escape(cell_text(r, SessionColumn::Date)) << "</td><td>" << (r.finished ? "yes" : "not yet")
+    << "</td><td class=num>" << r.trial_count << "</td><td class=num>" << cell_text(r, SessionColumn::Pretest)
+    << "</td><td class=num>" << cell_text(r, SessionColumn::Evaluation) << "</td><td class=\"num "
     << (r.improvement && *r.improvement > 0 ? "good" : "bad") << "\">" << cell_text(r, SessionColumn::Improvement)
     << "</td></tr></table>\n<p class=note>Scores are the task's reward: 0 is the expert's result, lower is worse; "
        "improvement = evaluation mean - pre-test mean.</p>\n";
@@ -71,19 +71,22 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
   }
   const auto& d = *s.diagnosis;
   h << "<p class=note>Alg. 2 recomputed from the " << d.pretest_trials << " pre-test trials with the "
-    << html_escape(d.extractor) << " extractor: a skill the expert used (at position j of its sequence) that the "
+    << html_escape(d.extractor)
+    << " extractor: a skill the expert used (at position j of its sequence) that the "
        "learner's trial lacks costs &Delta; = &minus;r / j, r the trial's reward. "
-    << (d.matches_stored ? "The recomputation matches the stored diagnosis."
-                         : "<b>The recomputation differs from the stored diagnosis</b> (the model or data changed since).")
-    << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed in pre-test trials (&Delta;)</th></tr>\n";
+    << (d.matches_stored
+            ? "The recomputation matches the stored diagnosis."
+            : "<b>The recomputation differs from the stored diagnosis</b> (the model or data changed since).")
+    << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed in pre-test "
+       "trials (&Delta;)</th></tr>\n";
   for (const auto& skill : d.skills) {
     h << "<tr><td>" << skill.skill << ": " << html_escape(skill.description) << "</td><td class=num>"
       << number(skill.expertise) << "</td><td class=num>" << skill.occurrences << "&times;</td><td>";
     if (skill.missed.empty()) h << "none";
     for (std::size_t i = 0; i < skill.missed.size(); ++i) {
       const auto& m = skill.missed[i];
-      h << (i ? "; " : "") << "trial " << m.seq << " (j=" << m.position << ", r=" << number(m.reward) << ", &Delta;="
-        << number(m.delta) << ")";
+      h << (i ? "; " : "") << "trial " << m.seq << " (j=" << m.position << ", r=" << number(m.reward)
+        << ", &Delta;=" << number(m.delta) << ")";
     }
     h << "</td></tr>\n";
   }
@@ -95,10 +98,10 @@ void trial_table(std::ostringstream& h, const SessionReport& s) {
        "<th>Learner's skills</th><th>Expert's / drill's skills</th></tr>\n";
   for (const auto& t : s.trials) {
     const auto& r = t.review.stored.record;
-    h << "<tr><td>" << t.review.stored.seq << "</td><td>" << records::to_string(r.kind) << "</td><td class=num>" << r.round
-      << "</td><td class=num>" << (r.drill_index ? std::to_string(*r.drill_index + 1) : "") << "</td><td class=num>"
-      << optional_number(r.score, "%.2f") << "</td><td>" << html_escape(r.device) << "</td><td>"
-      << skills_text(t.review.learner_skills) << "</td><td>"
+    h << "<tr><td>" << t.review.stored.seq << "</td><td>" << records::to_string(r.kind) << "</td><td class=num>"
+      << r.round << "</td><td class=num>" << (r.drill_index ? std::to_string(*r.drill_index + 1) : "")
+      << "</td><td class=num>" << optional_number(r.score, "%.2f") << "</td><td>" << html_escape(r.device)
+      << "</td><td>" << skills_text(t.review.learner_skills) << "</td><td>"
       << skills_text(t.review.ghost ? t.review.ghost_skills : t.review.expert_skills) << "</td></tr>\n";
   }
   h << "</table>\n";
@@ -121,7 +124,8 @@ std::string base64(std::string_view bytes) {
   }
   if (i < bytes.size()) {
     const bool two = i + 1 < bytes.size();
-    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16 | (two ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0u);
+    const unsigned v =
+        static_cast<unsigned char>(bytes[i]) << 16 | (two ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0u);
     out += kAlphabet[v >> 18 & 63];
     out += kAlphabet[v >> 12 & 63];
     out += two ? kAlphabet[v >> 6 & 63] : '=';
@@ -134,11 +138,20 @@ std::string html_escape(std::string_view text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -215,7 +228,8 @@ std::string report_html(const std::string& learner, const std::vector<SessionRep
     if (!s.before_after.empty()) h << "<h3>Before and after</h3>\n";
     for (const auto& img : s.before_after) image(h, img);
     trial_table(h, s);
-    if (!s.trial_images.empty()) h << "<details><summary>Every trial's picture (" << s.trial_images.size() << ")</summary>\n";
+    if (!s.trial_images.empty())
+      h << "<details><summary>Every trial's picture (" << s.trial_images.size() << ")</summary>\n";
     for (const auto& img : s.trial_images) image(h, img);
     if (!s.trial_images.empty()) h << "</details>\n";
   }

@@ -34,7 +34,7 @@ struct SessionReport {
   std::string extractor_notice;                   // the kit's fallback notice (e.g. no trained model), if any
   std::optional<ReportImage> expertise_chart;
   std::vector<ReportImage> before_after;
-  std::vector<ReportImage> trial_images;          // one per trial, in seq order
+  std::vector<ReportImage> trial_images;  // one per trial, in seq order
 };
 
 // Header and one line per trial: session_id,seq,kind,round,drill_index,task,score,device,started,finished,

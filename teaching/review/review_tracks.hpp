@@ -21,10 +21,10 @@ struct TrackPoint {
 };
 
 struct TrialTrack {
-  std::vector<TrackPoint> points;               // T + 1: before each of the T steps, then where it ended
-  std::vector<double> headings;                 // parking: radians at each point; writing: empty
-  std::vector<std::array<double, 2>> inputs;    // T: parking (steering, throttle) in [-1, 1]; writing (dx, dy)
-  double step_seconds = 0.0;                    // time one step takes when played back at 1x
+  std::vector<TrackPoint> points;             // T + 1: before each of the T steps, then where it ended
+  std::vector<double> headings;               // parking: radians at each point; writing: empty
+  std::vector<std::array<double, 2>> inputs;  // T: parking (steering, throttle) in [-1, 1]; writing (dx, dy)
+  double step_seconds = 0.0;                  // time one step takes when played back at 1x
   int steps() const { return static_cast<int>(inputs.size()); }
 };
 
@@ -34,7 +34,6 @@ struct TrialTrack {
 TrialTrack track_of(TaskKind task, const StepSequence& steps, const std::optional<VehicleState>& end);
 
 // The track of a projected drill's ghost path (PlayableDrill::ghost_path, one point per state).
-TrialTrack ghost_track(TaskKind task, const std::vector<std::array<double, 2>>& ghost_path,
-                       const StepSequence& steps);
+TrialTrack ghost_track(TaskKind task, const std::vector<std::array<double, 2>>& ghost_path, const StepSequence& steps);
 
 }  // namespace sc::review

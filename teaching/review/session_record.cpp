@@ -7,8 +7,8 @@ namespace sc::review {
 const records::StoredTrial& SessionRecord::trial(int seq) const {
   for (const auto& t : trials)
     if (t.seq == seq) return t;
-  throw InputError("session " + std::to_string(session.id), "has no trial " + std::to_string(seq) + " (it has " +
-                                                                 std::to_string(trials.size()) + " trials)");
+  throw InputError("session " + std::to_string(session.id),
+                   "has no trial " + std::to_string(seq) + " (it has " + std::to_string(trials.size()) + " trials)");
 }
 
 std::vector<const records::StoredTrial*> SessionRecord::trials_of(records::TrialKind kind, int round) const {
@@ -26,8 +26,7 @@ const records::CurriculumRecord* SessionRecord::curriculum(int round) const {
 
 SessionRecord load_session_record(const records::LearnerStore& store, std::int64_t session_id) {
   auto session = store.session(session_id);
-  if (!session)
-    throw InputError(store.database_path().string(), "has no session " + std::to_string(session_id));
+  if (!session) throw InputError(store.database_path().string(), "has no session " + std::to_string(session_id));
   SessionRecord record;
   record.session = std::move(*session);
   record.trials = store.trials_of_session(session_id);
@@ -50,8 +49,8 @@ std::vector<std::int64_t> learner_session_ids(const records::LearnerStore& store
     if (others++ < kNamesShown) names += (names.empty() ? "" : ", ") + overview.name;
   }
   if (others > kNamesShown) names += " and " + std::to_string(others - kNamesShown) + " more";
-  throw InputError(store.database_path().string(), "has no learner '" + std::string(learner) + "' (learners: " +
-                                                       (names.empty() ? "none" : names) + ")");
+  throw InputError(store.database_path().string(), "has no learner '" + std::string(learner) +
+                                                       "' (learners: " + (names.empty() ? "none" : names) + ")");
 }
 
 }  // namespace sc::review

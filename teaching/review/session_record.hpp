@@ -11,8 +11,8 @@ namespace sc::review {
 
 struct SessionRecord {
   records::SessionRow session;
-  std::vector<records::StoredTrial> trials;         // seq order
-  std::vector<records::DiagnosisRecord> diagnoses;  // by round
+  std::vector<records::StoredTrial> trials;          // seq order
+  std::vector<records::DiagnosisRecord> diagnoses;   // by round
   std::vector<records::CurriculumRecord> curricula;  // by round
 
   // The trial with that seq; throws InputError naming the session when there is none.

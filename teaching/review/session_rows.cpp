@@ -12,19 +12,27 @@ namespace {
 
 std::optional<double> number_of(const SessionListRow& row, SessionColumn column) {
   switch (column) {
-    case SessionColumn::Pretest: return row.pretest_mean;
-    case SessionColumn::Evaluation: return row.eval_mean;
-    case SessionColumn::Improvement: return row.improvement;
-    default: return std::nullopt;
+    case SessionColumn::Pretest:
+      return row.pretest_mean;
+    case SessionColumn::Evaluation:
+      return row.eval_mean;
+    case SessionColumn::Improvement:
+      return row.improvement;
+    default:
+      return std::nullopt;
   }
 }
 
 const std::string& text_of(const SessionListRow& row, SessionColumn column) {
   switch (column) {
-    case SessionColumn::Learner: return row.learner;
-    case SessionColumn::Task: return row.task;
-    case SessionColumn::Condition: return row.condition;
-    default: return row.date;  // ISO-8601 text sorts chronologically
+    case SessionColumn::Learner:
+      return row.learner;
+    case SessionColumn::Task:
+      return row.task;
+    case SessionColumn::Condition:
+      return row.condition;
+    default:
+      return row.date;  // ISO-8601 text sorts chronologically
   }
 }
 
@@ -54,13 +62,20 @@ std::string lot_of(const records::SessionRow& session) {
 
 std::string_view column_title(SessionColumn column) {
   switch (column) {
-    case SessionColumn::Learner: return "Learner";
-    case SessionColumn::Task: return "Task";
-    case SessionColumn::Date: return "Date";
-    case SessionColumn::Condition: return "Condition";
-    case SessionColumn::Pretest: return "Pre-test";
-    case SessionColumn::Evaluation: return "Evaluation";
-    case SessionColumn::Improvement: return "Improvement";
+    case SessionColumn::Learner:
+      return "Learner";
+    case SessionColumn::Task:
+      return "Task";
+    case SessionColumn::Date:
+      return "Date";
+    case SessionColumn::Condition:
+      return "Condition";
+    case SessionColumn::Pretest:
+      return "Pre-test";
+    case SessionColumn::Evaluation:
+      return "Evaluation";
+    case SessionColumn::Improvement:
+      return "Improvement";
   }
   return "";
 }

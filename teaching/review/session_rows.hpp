@@ -27,10 +27,9 @@ struct SessionListRow {
 };
 
 enum class SessionColumn { Learner, Task, Date, Condition, Pretest, Evaluation, Improvement };
-inline constexpr SessionColumn kSessionColumns[] = {SessionColumn::Learner,   SessionColumn::Task,
-                                                    SessionColumn::Date,      SessionColumn::Condition,
-                                                    SessionColumn::Pretest,   SessionColumn::Evaluation,
-                                                    SessionColumn::Improvement};
+inline constexpr SessionColumn kSessionColumns[] = {
+    SessionColumn::Learner, SessionColumn::Task,       SessionColumn::Date,       SessionColumn::Condition,
+    SessionColumn::Pretest, SessionColumn::Evaluation, SessionColumn::Improvement};
 
 std::string_view column_title(SessionColumn column);  // "Learner", "Pre-test", ...
 
@@ -42,8 +41,8 @@ std::vector<SessionListRow> session_rows(const std::vector<records::LearnerOverv
 // session id order.
 void sort_session_rows(std::vector<SessionListRow>& rows, SessionColumn column, bool ascending);
 
-// The cell as text: names as they are (a parking task with its lot: "parking, study corner"), the date as "2024-05-01 10:00", scores with 2 decimals ("-3.12";
-// improvement signed "+1.90"), "-" when missing.
+// The cell as text: names as they are (a parking task with its lot: "parking, study corner"), the date as "2024-05-01
+// 10:00", scores with 2 decimals ("-3.12"; improvement signed "+1.90"), "-" when missing.
 std::string cell_text(const SessionListRow& row, SessionColumn column);
 
 }  // namespace sc::review

@@ -21,7 +21,8 @@ Json parse_stored(const std::string& text, const std::string& where) {
 void parking_rewards(TrialReview& review, const StepSequence& steps, const std::string& where) {
   const ParkingReplay replay = replay_parking_trial(parse_parking_trial(review.learner, where));
   std::optional<VehicleState> end;
-  if (static_cast<int>(replay.steps.size()) == steps.length() && !replay.steps.empty()) end = replay.steps.back().vehicle;
+  if (static_cast<int>(replay.steps.size()) == steps.length() && !replay.steps.empty())
+    end = replay.steps.back().vehicle;
   review.learner_track = track_of(TaskKind::parking, steps, end);
   for (const auto& step : replay.steps) {
     review.rewards.push_back(step.reward);
@@ -36,11 +37,13 @@ void writing_rewards(TrialReview& review, const TaskKit& kit, const PlayableDril
   const int samples = static_cast<int>(std::min<std::size_t>(n, 24));
   const double seconds = review.learner_track.step_seconds * review.learner_track.steps();
   for (int i = 1; i <= samples; ++i) {
-    const std::size_t keep = std::max<std::size_t>(2, n * static_cast<std::size_t>(i) / static_cast<std::size_t>(samples));
+    const std::size_t keep =
+        std::max<std::size_t>(2, n * static_cast<std::size_t>(i) / static_cast<std::size_t>(samples));
     Json prefix = review.learner;
     prefix["points"] = Json(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(std::min(keep, n)));
     if (prefix.contains("t") && prefix["t"].is_array() && prefix["t"].size() == n)
-      prefix["t"] = Json(review.learner["t"].begin(), review.learner["t"].begin() + static_cast<std::ptrdiff_t>(std::min(keep, n)));
+      prefix["t"] = Json(review.learner["t"].begin(),
+                         review.learner["t"].begin() + static_cast<std::ptrdiff_t>(std::min(keep, n)));
     review.rewards.push_back(drill ? kit.drill_attempt_reward(*drill, prefix) : kit.reward_of(prefix));
     review.reward_times.push_back(seconds * static_cast<double>(i) / samples);
   }
@@ -60,10 +63,14 @@ std::string trial_label(const records::StoredTrial& trial) {
   const std::string round = " (round " + std::to_string(r.round) + ")";
   const std::string drill = r.drill_index ? " of drill " + std::to_string(*r.drill_index + 1) : "";
   switch (r.kind) {
-    case records::TrialKind::Pretest: return "pre-test, trial " + std::to_string(trial.seq) + round;
-    case records::TrialKind::Eval: return "evaluation, trial " + std::to_string(trial.seq) + round;
-    case records::TrialKind::Practice: return "practice" + drill + ", trial " + std::to_string(trial.seq) + round;
-    case records::TrialKind::Demo: return "demo" + drill + ", trial " + std::to_string(trial.seq) + round;
+    case records::TrialKind::Pretest:
+      return "pre-test, trial " + std::to_string(trial.seq) + round;
+    case records::TrialKind::Eval:
+      return "evaluation, trial " + std::to_string(trial.seq) + round;
+    case records::TrialKind::Practice:
+      return "practice" + drill + ", trial " + std::to_string(trial.seq) + round;
+    case records::TrialKind::Demo:
+      return "demo" + drill + ", trial " + std::to_string(trial.seq) + round;
   }
   return "trial " + std::to_string(trial.seq);
 }
@@ -141,8 +148,8 @@ TrialReview SessionReview::trial(int seq) const {
     writing_rewards(review, kit_, drill);
   }
   review.reward = stored.record.score ? *stored.record.score
-                  : drill                ? kit_.drill_attempt_reward(*drill, review.learner)
-                                         : kit_.reward_of(review.learner);
+                  : drill             ? kit_.drill_attempt_reward(*drill, review.learner)
+                                      : kit_.reward_of(review.learner);
   return review;
 }
 

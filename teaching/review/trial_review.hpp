@@ -28,21 +28,21 @@ struct SkillSpan {
 struct TrialReview {
   records::StoredTrial stored;  // kind, round, drill index, score, device, times
   TaskKind task = TaskKind::parking;
-  Json learner;                 // the trial document as stored
+  Json learner;  // the trial document as stored
   TrialTrack learner_track;
   std::vector<SkillSpan> learner_skills;  // the extractor on the learner's steps
   std::optional<Json> expert;             // pre-test/eval: the expert's trial for the same scenario
   TrialTrack expert_track;
   std::vector<SkillSpan> expert_skills;
-  std::optional<Json> ghost;              // demo/practice: the drill the learner saw as a ghost
+  std::optional<Json> ghost;  // demo/practice: the drill the learner saw as a ghost
   TrialTrack ghost_track;
-  std::vector<SkillSpan> ghost_skills;    // the drill plan's skills (what the drill was built to train)
+  std::vector<SkillSpan> ghost_skills;  // the drill plan's skills (what the drill was built to train)
   // Reward (<= 0, 0 best) over the trial: parking, the reward after each control step; writing, the score
   // of the ink written so far at evenly spaced points. Sample i is at time reward_times[i] seconds.
   std::vector<double> rewards;
   std::vector<double> reward_times;
-  double reward = 0.0;          // the kit's reward of the whole trial (the stored score when present)
-  std::string label;            // "pre-test 2 (round 1)", "practice of drill 1 (round 1)", ...
+  double reward = 0.0;  // the kit's reward of the whole trial (the stored score when present)
+  std::string label;    // "pre-test 2 (round 1)", "practice of drill 1 (round 1)", ...
 };
 
 class SessionReview {

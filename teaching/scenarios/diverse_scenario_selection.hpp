@@ -18,8 +18,8 @@ struct ScenarioPick {
 };
 
 struct ScenarioSelection {
-  std::vector<ScenarioPick> picks;   // in pick order
-  std::vector<int> covered_skills;   // sorted union of the picked scenarios' skills
+  std::vector<ScenarioPick> picks;     // in pick order
+  std::vector<int> covered_skills;     // sorted union of the picked scenarios' skills
   std::vector<int> scenarios() const;  // the pool indices, in pick order
 };
 

@@ -13,9 +13,9 @@ namespace sc {
 
 // A learner's trial with the expert's segmentation of its scenario.
 struct TestTrial {
-  int scenario = 0;       // id echoed in the diagnosis (pool index for the pre-test, list index for eval)
-  Segmentation expert;    // the expert's skills on that scenario
-  Json trial;             // the learner's trial document
+  int scenario = 0;     // id echoed in the diagnosis (pool index for the pre-test, list index for eval)
+  Segmentation expert;  // the expert's skills on that scenario
+  Json trial;           // the learner's trial document
 };
 
 // Segments every learner trial (one batched extractor call) and builds Alg. 2's inputs.

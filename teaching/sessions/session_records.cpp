@@ -6,7 +6,8 @@
 
 namespace sc {
 
-records::NewSession session_record(const SessionSettings& settings, const std::string& task, const std::string& started) {
+records::NewSession session_record(const SessionSettings& settings, const std::string& task,
+                                   const std::string& started) {
   records::NewSession session;
   session.learner = settings.learner;
   session.task = task;
@@ -38,11 +39,10 @@ records::CurriculumRecord curriculum_record(std::int64_t session_id, int round, 
   record.items_json = curriculum_to_json(curriculum).dump();
   for (std::size_t i = 0; i < curriculum.items.size(); ++i) {
     const PracticeItem& item = curriculum.items[i];
-    record.drills.push_back({static_cast<int>(i), Json(item.material.skills()).dump(),
-                             Json{{"plan", drill_plan_to_json(item.material)},
-                                  {"sessions", item.sessions},
-                                  {"steps", item.steps()}}
-                                 .dump()});
+    record.drills.push_back(
+        {static_cast<int>(i), Json(item.material.skills()).dump(),
+         Json{{"plan", drill_plan_to_json(item.material)}, {"sessions", item.sessions}, {"steps", item.steps()}}
+             .dump()});
   }
   record.created = created;
   return record;

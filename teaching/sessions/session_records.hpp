@@ -14,7 +14,8 @@
 
 namespace sc {
 
-records::NewSession session_record(const SessionSettings& settings, const std::string& task, const std::string& started);
+records::NewSession session_record(const SessionSettings& settings, const std::string& task,
+                                   const std::string& started);
 
 // Alg. 2's estimate and its targets, with the extractor's name.
 records::DiagnosisRecord diagnosis_record(std::int64_t session_id, int round, const ExpertiseEstimate& diagnosis,

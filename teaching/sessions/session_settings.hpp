@@ -32,7 +32,8 @@ struct SessionSettings {
 };
 
 // {"pretest_count":5, "eval_count":5, "device":"keyboard", "weak_skills":3, "drills_per_weak_skill":2,
-//  "goal_region":"study-corner" (parking only)} (learner, condition and seed have their own columns in the sessions table).
+//  "goal_region":"study-corner" (parking only)} (learner, condition and seed have their own columns in the sessions
+//  table).
 Json settings_to_json(const SessionSettings& settings);
 // Fills the counts and device from `settings_json` (missing members keep their defaults, so sessions
 // recorded before a member existed resume with today's default).

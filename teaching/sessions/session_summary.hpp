@@ -12,19 +12,19 @@ namespace sc {
 
 struct SkillChange {
   int skill = 0;
-  double before = 0.0;    // E_m on the pre-test (<= 0, 0 = no mistakes seen)
-  double after = 0.0;     // E_m on this round's evaluation
-  bool drilled = false;   // practised in this round: a target of a drill or a skill item that was played
+  double before = 0.0;      // E_m on the pre-test (<= 0, 0 = no mistakes seen)
+  double after = 0.0;       // E_m on this round's evaluation
+  bool drilled = false;     // practised in this round: a target of a drill or a skill item that was played
   int practice_trials = 0;  // how many practice trials of this round targeted it (extra attempts included)
-  bool seen = false;      // the expert used it in the pre-test or evaluation scenarios
+  bool seen = false;        // the expert used it in the pre-test or evaluation scenarios
 };
 
 struct RoundSummary {
   int round = 1;
   double pretest_mean = 0.0;  // mean task reward (<= 0, 0 best)
   double eval_mean = 0.0;
-  double improvement = 0.0;   // eval_mean - pretest_mean: > 0 means closer to the expert
-  int practice_trials = 0;    // practice trials played this round (extra attempts included)
+  double improvement = 0.0;         // eval_mean - pretest_mean: > 0 means closer to the expert
+  int practice_trials = 0;          // practice trials played this round (extra attempts included)
   std::vector<SkillChange> skills;  // every skill the kit knows, by id
 };
 

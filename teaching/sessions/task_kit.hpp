@@ -19,12 +19,12 @@ namespace sc {
 
 // One expert demonstration of the pool that pre-tests, diagnoses and drills are built from.
 struct ExpertDemo {
-  Json scenario;          // the task's scenario object
-  Json trial;             // the expert's whole trial document (source "expert")
-  StepSequence steps;     // what the SkillExtractor reads
-  Segmentation skills;    // the extractor's segmentation of `steps`
+  Json scenario;             // the task's scenario object
+  Json trial;                // the expert's whole trial document (source "expert")
+  StepSequence steps;        // what the SkillExtractor reads
+  Segmentation skills;       // the extractor's segmentation of `steps`
   Segmentation time_slices;  // the time heuristic's segmentation (the paper's baseline condition)
-  double reward = 0.0;    // the expert's episode score (<= 0)
+  double reward = 0.0;       // the expert's episode score (<= 0)
 };
 
 class TaskKit {

@@ -13,11 +13,16 @@ namespace {
 
 const char* phase_words(SessionPhase phase) {
   switch (phase) {
-    case SessionPhase::Pretest: return "the pre-test";
-    case SessionPhase::Diagnosis: return "the diagnosis";
-    case SessionPhase::Drills: return "the drills";
-    case SessionPhase::Evaluation: return "the evaluation";
-    case SessionPhase::Summary: return "the summary";
+    case SessionPhase::Pretest:
+      return "the pre-test";
+    case SessionPhase::Diagnosis:
+      return "the diagnosis";
+    case SessionPhase::Drills:
+      return "the drills";
+    case SessionPhase::Evaluation:
+      return "the evaluation";
+    case SessionPhase::Summary:
+      return "the summary";
   }
   return "?";
 }
@@ -86,8 +91,7 @@ int TrainingSession::test_count() const {
 
 const ExpertDemo& TrainingSession::test_expert() const {
   const std::size_t item = static_cast<std::size_t>(item_index());
-  if (phase() == SessionPhase::Pretest)
-    return kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(item))];
+  if (phase() == SessionPhase::Pretest) return kit_.expert_pool()[static_cast<std::size_t>(pretest_pool_.at(item))];
   require_phase(SessionPhase::Evaluation, "a test scenario");
   return eval_experts().at(item);
 }
@@ -331,8 +335,7 @@ TrainingSession::RoundState& TrainingSession::state(int r) {
 }
 
 const TrainingSession::RoundState& TrainingSession::state(int r) const {
-  if (r < 1 || r > static_cast<int>(rounds_.size()))
-    misuse("round " + std::to_string(r) + " has not started");
+  if (r < 1 || r > static_cast<int>(rounds_.size())) misuse("round " + std::to_string(r) + " has not started");
   return rounds_[static_cast<std::size_t>(r - 1)];
 }
 
@@ -357,7 +360,8 @@ void TrainingSession::set_progress(records::SessionProgress progress, bool save)
 
 void TrainingSession::require_phase(SessionPhase phase, const char* what) const {
   if (progress_.phase != phase)
-    misuse(std::string(what) + " belongs to " + phase_words(phase) + ", the session is at " + phase_words(progress_.phase));
+    misuse(std::string(what) + " belongs to " + phase_words(phase) + ", the session is at " +
+           phase_words(progress_.phase));
 }
 
 }  // namespace sc

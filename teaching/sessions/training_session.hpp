@@ -40,8 +40,8 @@ struct TrialTimes {
 };
 
 struct SubmittedTrial {
-  double reward = 0.0;          // the kit's reward (<= 0, 0 = the expert's result)
-  records::SaveResult saved;    // kept in the database, or pending with a message to show
+  double reward = 0.0;        // the kit's reward (<= 0, 0 = the expert's result)
+  records::SaveResult saved;  // kept in the database, or pending with a message to show
 };
 
 // Work of another phase (analyse() during the pre-test, a practice trial at the summary, ...) is a bug in
@@ -69,9 +69,9 @@ class TrainingSession {
   const std::vector<int>& pretest_pool_indices() const { return pretest_pool_; }  // Alg. 1's picks
   std::vector<Json> pretest_scenarios() const;
   const std::vector<ExpertDemo>& eval_experts() const;  // this round's fresh scenarios with expert trials
-  int test_count() const;                 // trials of the current test phase
-  const ExpertDemo& test_expert() const;  // the current test item's scenario and expert trial
-  const Json& test_scenario() const;      // the scenario to play now
+  int test_count() const;                               // trials of the current test phase
+  const ExpertDemo& test_expert() const;                // the current test item's scenario and expert trial
+  const Json& test_scenario() const;                    // the scenario to play now
   const Json& test_expert_trial() const;  // its expert trial (for the "after" picture; not shown during tests)
   double test_time_limit() const;         // seconds, proportional to the expert's length
   SubmittedTrial submit_test_trial(const Json& trial, const TrialTimes& times);
@@ -84,12 +84,12 @@ class TrainingSession {
   CurriculumConfig curriculum_config() const;  // the kit's, with the session's round size
 
   // ---- drills (phase Drills) ----
-  int practice_slot_count() const;            // sum of the curriculum's sessions
+  int practice_slot_count() const;  // sum of the curriculum's sessions
   // What the learner is told before practice: the most time the round's attempts may take (the sum of their
   // time limits; the demos come on top), in minutes, rounded up.
   int practice_minutes() const;
-  int current_item() const;                   // item of the current slot
-  int session_of_slot() const;                // 1-based session number of the current slot within its item
+  int current_item() const;                    // item of the current slot
+  int session_of_slot() const;                 // 1-based session number of the current slot within its item
   const PlayableDrill& drill(int item) const;  // projected once, cached
   double drill_time_limit(int item) const;
   // The expert's demo of an item (no score). Does not advance.
@@ -124,7 +124,7 @@ class TrainingSession {
   void select_pretest();
   CurriculumInputs curriculum_inputs() const;
   std::map<int, int> practice_per_skill() const;  // this round's played practice trials per target skill
-  void compute_round(int round);  // diagnosis + curriculum of `round` (no writes)
+  void compute_round(int round);                  // diagnosis + curriculum of `round` (no writes)
   RoundState& state(int round);
   const RoundState& state(int round) const;
   std::vector<int> slot_items(const Curriculum& curriculum) const;
@@ -145,12 +145,11 @@ class TrainingSession {
   bool finished_ = false;
   std::vector<int> pretest_pool_;
   std::vector<Json> pretest_trials_;
-  std::vector<RoundState> rounds_;               // index round - 1
-  std::vector<AdaptiveRound> adaptive_rounds_;   // Adaptive only, index round - 1
+  std::vector<RoundState> rounds_;                               // index round - 1
+  std::vector<AdaptiveRound> adaptive_rounds_;                   // Adaptive only, index round - 1
   mutable std::map<int, std::vector<ExpertDemo>> eval_experts_;  // per round, built on first use
   mutable std::map<std::pair<int, int>, PlayableDrill> drills_;  // (round, item)
   double analysis_seconds_ = 0.0;
-
 };
 
 }  // namespace sc

@@ -10,8 +10,7 @@ std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, rec
                                                          const records::ResumePoint& point, TimestampSource now) {
   const records::SessionRow& row = point.session;
   const std::string where = "session " + std::to_string(row.id);
-  if (row.task != kit.task())
-    throw InputError(where, "is a " + row.task + " session, not " + kit.task());
+  if (row.task != kit.task()) throw InputError(where, "is a " + row.task + " session, not " + kit.task());
   std::unique_ptr<TrainingSession> s(new TrainingSession(kit, store, std::move(now)));
   s->session_id_ = row.id;
   s->settings_ = settings_of_session(row);
@@ -29,7 +28,8 @@ std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, rec
           throw InputError(trial_where, "is one pre-test trial too many");
         s->pretest_trials_.push_back(std::move(trial));
         break;
-      case records::TrialKind::Demo: break;  // demos carry no evidence
+      case records::TrialKind::Demo:
+        break;  // demos carry no evidence
       case records::TrialKind::Practice: {
         if (!s->state(t.round).analysed) s->compute_round(t.round);
         const int items = static_cast<int>(s->state(t.round).curriculum.items.size());
@@ -38,7 +38,9 @@ std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, rec
         s->state(t.round).practice.emplace_back(*t.drill_index, std::move(trial));
         break;
       }
-      case records::TrialKind::Eval: s->state(t.round).eval.push_back(std::move(trial)); break;
+      case records::TrialKind::Eval:
+        s->state(t.round).eval.push_back(std::move(trial));
+        break;
     }
   }
   s->progress_ = row.progress;

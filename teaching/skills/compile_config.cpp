@@ -6,9 +6,12 @@ namespace sc {
 
 std::string to_string(CompileMode mode) {
   switch (mode) {
-    case CompileMode::Action: return "action";
-    case CompileMode::StateAction: return "state+action";
-    case CompileMode::StateDiffAction: return "statediff+action";
+    case CompileMode::Action:
+      return "action";
+    case CompileMode::StateAction:
+      return "state+action";
+    case CompileMode::StateDiffAction:
+      return "statediff+action";
   }
   return "action";
 }

@@ -22,20 +22,20 @@ CompileMode parse_compile_mode(const std::string& text, const std::string& where
 struct CompileConfig {
   std::string task = "synthetic";  // "parking", "writing", ...: checked when a model is loaded
   CompileMode mode = CompileMode::Action;
-  int state_dim = 0;               // taken from the data when training
+  int state_dim = 0;  // taken from the data when training
   int action_dim = 2;
-  int latent_size = 16;            // M: number of discrete skills (concrete latent)
-  int num_segments = 4;            // K
-  int hidden = 64;                 // H
-  double prior_rate = 10.0;        // Poisson rate (segment length in model steps)
+  int latent_size = 16;      // M: number of discrete skills (concrete latent)
+  int num_segments = 4;      // K
+  int hidden = 64;           // H
+  double prior_rate = 10.0;  // Poisson rate (segment length in model steps)
   double beta_b = 0.1;
   double beta_z = 0.1;
   double beta_s = 0.0;
-  double learning_rate = 1e-3;     // Adam
+  double learning_rate = 1e-3;  // Adam
   int batch_size = 100;
-  int iterations = 2000;           // passes over the training split (the reference's "iterations")
-  int eval_interval = 5;           // iterations between validation checks
-  int patience = 50;               // stop after this many validation checks without improvement
+  int iterations = 2000;  // passes over the training split (the reference's "iterations")
+  int eval_interval = 5;  // iterations between validation checks
+  int patience = 50;      // stop after this many validation checks without improvement
   std::uint64_t seed = 0;
   // Independent trainings from seeds seed, seed + 1, ...; the one with the lowest validation NLL is kept.
   // CompILE's relaxed objective has poor local minima (measured on planted data: the same config reached

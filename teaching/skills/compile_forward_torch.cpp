@@ -53,10 +53,10 @@ Tensor fixed_boundary(const Batch& batch, int k, std::int64_t positions) {
 
 // Everything the K sequential encoder passes produce.
 struct Encoded {
-  std::vector<Tensor> boundary_logits;  // k < K-1: [B, P] masked logits
-  std::vector<Tensor> latent_logits;    // [B, M]
-  std::vector<Tensor> latents;          // [B, M] samples (relaxed) or one-hot
-  std::vector<Tensor> weights;          // [B, T] soft share of each action in segment k
+  std::vector<Tensor> boundary_logits;     // k < K-1: [B, P] masked logits
+  std::vector<Tensor> latent_logits;       // [B, M]
+  std::vector<Tensor> latents;             // [B, M] samples (relaxed) or one-hot
+  std::vector<Tensor> weights;             // [B, T] soft share of each action in segment k
   std::vector<std::vector<int>> position;  // [B][K] hard boundary (argmax of the sample)
   std::vector<std::vector<int>> start;     // [B][K] hard start: max of earlier hard boundaries
 };
@@ -96,7 +96,8 @@ Encoded encode(const CompileNetwork& net, const Batch& batch, bool relaxed, at::
     const Tensor readout = torch::einsum("tbh,bt->bh", {e_pad.narrow(0, 0, t_max), b.narrow(1, 1, t_max)});
     const Tensor z_logits = net.head_z(readout);
     out.latent_logits.push_back(z_logits);
-    out.latents.push_back(relaxed ? torch::softmax(z_logits + gumbel_like(z_logits, gen), -1) : one_hot_argmax(z_logits));
+    out.latents.push_back(relaxed ? torch::softmax(z_logits + gumbel_like(z_logits, gen), -1)
+                                  : one_hot_argmax(z_logits));
 
     const Tensor hard = b.argmax(-1).contiguous();
     const auto* hp = hard.data_ptr<std::int64_t>();
@@ -104,7 +105,9 @@ Encoded encode(const CompileNetwork& net, const Batch& batch, bool relaxed, at::
       auto& pos = out.position[static_cast<std::size_t>(r)];
       pos[static_cast<std::size_t>(k)] = static_cast<int>(hp[r]);
       out.start[static_cast<std::size_t>(r)][static_cast<std::size_t>(k)] =
-          k == 0 ? 0 : std::max(out.start[static_cast<std::size_t>(r)][static_cast<std::size_t>(k - 1)], pos[static_cast<std::size_t>(k - 1)]);
+          k == 0 ? 0
+                 : std::max(out.start[static_cast<std::size_t>(r)][static_cast<std::size_t>(k - 1)],
+                            pos[static_cast<std::size_t>(k - 1)]);
     }
     if (!weights && k == k_count - 1) break;
     const Tensor cdf = torch::cumsum(b, 1);
@@ -145,7 +148,8 @@ Decoded decode(const CompileNetwork& net, const Batch& batch, const Encoded& enc
     for (std::int64_t k = 0; k < k_count; ++k) {
       const std::int64_t len = batch.lengths[static_cast<std::size_t>(b)];
       const std::int64_t s = enc.start[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)];
-      const std::int64_t e = std::max<std::int64_t>(s, enc.position[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)]);
+      const std::int64_t e =
+          std::max<std::int64_t>(s, enc.position[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)]);
       const std::int64_t reach = std::min(len, e + std::max<std::int64_t>(3, (e - s) / 2));
       need[static_cast<std::size_t>(b * k_count + k)] = std::max<std::int64_t>(1, reach - s);
     }
@@ -186,7 +190,8 @@ Decoded decode(const CompileNetwork& net, const Batch& batch, const Encoded& enc
       const std::int64_t s = enc.start[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)];
       for (std::int64_t t = 0; t < t_max; ++t) {
         const std::int64_t j = std::clamp<std::int64_t>(t - s, 0, need[static_cast<std::size_t>(r)] - 1);
-        gather[static_cast<std::size_t>(r * t_max + t)] = packing.offset[static_cast<std::size_t>(j)] + rank[static_cast<std::size_t>(r)];
+        gather[static_cast<std::size_t>(r * t_max + t)] =
+            packing.offset[static_cast<std::size_t>(j)] + rank[static_cast<std::size_t>(r)];
       }
     }
   const Tensor index = torch::tensor(gather, torch::kInt64);
@@ -203,7 +208,8 @@ Tensor log_length_prior(const Batch& batch, const Encoded& enc, double rate, int
   const std::int64_t positions = batch.steps + 1;
   std::vector<double> log_pmf(static_cast<std::size_t>(positions));
   for (std::int64_t n = 0; n < positions; ++n)
-    log_pmf[static_cast<std::size_t>(n)] = static_cast<double>(n) * std::log(rate) - rate - std::lgamma(static_cast<double>(n) + 1.0);
+    log_pmf[static_cast<std::size_t>(n)] =
+        static_cast<double>(n) * std::log(rate) - rate - std::lgamma(static_cast<double>(n) + 1.0);
   Tensor prior = torch::zeros({std::max(k_count - 1, 0), batch.size, positions});
   auto acc = prior.accessor<float, 3>();
   for (int k = 0; k + 1 < k_count; ++k)
@@ -211,9 +217,11 @@ Tensor log_length_prior(const Batch& batch, const Encoded& enc, double rate, int
       const std::int64_t len = batch.lengths[static_cast<std::size_t>(b)];
       const int s = enc.start[static_cast<std::size_t>(b)][static_cast<std::size_t>(k)];
       double peak = -1e300;
-      for (std::int64_t t = 1; t <= len; ++t) peak = std::max(peak, log_pmf[static_cast<std::size_t>(std::max<std::int64_t>(t - s, 0))]);
+      for (std::int64_t t = 1; t <= len; ++t)
+        peak = std::max(peak, log_pmf[static_cast<std::size_t>(std::max<std::int64_t>(t - s, 0))]);
       double sum = 0.0;
-      for (std::int64_t t = 1; t <= len; ++t) sum += std::exp(log_pmf[static_cast<std::size_t>(std::max<std::int64_t>(t - s, 0))] - peak);
+      for (std::int64_t t = 1; t <= len; ++t)
+        sum += std::exp(log_pmf[static_cast<std::size_t>(std::max<std::int64_t>(t - s, 0))] - peak);
       const double norm = peak + std::log(sum);
       for (std::int64_t t = 1; t <= len; ++t)
         acc[k][b][t] = static_cast<float>(log_pmf[static_cast<std::size_t>(std::max<std::int64_t>(t - s, 0))] - norm);
@@ -260,7 +268,9 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
   if (batch.supervise_boundaries && cfg.num_segments > 1) {
     for (int k = 0; k + 1 < cfg.num_segments; ++k) {
       const Tensor target = fixed_boundary(batch, k, batch.steps + 1);
-      out.boundary_ce = out.boundary_ce - (torch::log_softmax(enc.boundary_logits[static_cast<std::size_t>(k)], -1) * target).sum() * inv_b;
+      out.boundary_ce =
+          out.boundary_ce -
+          (torch::log_softmax(enc.boundary_logits[static_cast<std::size_t>(k)], -1) * target).sum() * inv_b;
     }
     out.total = out.total + out.boundary_ce;
   }

@@ -33,13 +33,20 @@ std::int64_t first_argmax(const float* v, std::int64_t first, std::int64_t last)
 
 // Scratch rows of one encoder pass: row r's state and the gathered rows of the current step.
 struct PassScratch {
-  std::vector<float> h, c;                       // [B, H] state of each row after its last step
-  std::vector<float> gates, h_prev, c_prev;      // [B, 4H], [B, H], [B, H] gathered active rows
+  std::vector<float> h, c;                         // [B, H] state of each row after its last step
+  std::vector<float> gates, h_prev, c_prev;        // [B, 4H], [B, H], [B, H] gathered active rows
   std::vector<float> c_raw, tanh_c, h_out, c_out;  // [B, H] step outputs
-  std::vector<std::int64_t> rows;                // batch rows running at this step
+  std::vector<std::int64_t> rows;                  // batch rows running at this step
   PassScratch(std::int64_t b, std::int64_t hid)
-      : h(static_cast<std::size_t>(b * hid)), c(h.size()), gates(4 * h.size()), h_prev(h.size()), c_prev(h.size()),
-        c_raw(h.size()), tanh_c(h.size()), h_out(h.size()), c_out(h.size()) {}
+      : h(static_cast<std::size_t>(b * hid)),
+        c(h.size()),
+        gates(4 * h.size()),
+        h_prev(h.size()),
+        c_prev(h.size()),
+        c_raw(h.size()),
+        tanh_c(h.size()),
+        h_out(h.size()),
+        c_out(h.size()) {}
 };
 
 // One masked encoder pass with hard starts: fills e [N, H] (packed like xproj; zero before each row's start)

@@ -16,9 +16,9 @@ namespace sc {
 
 // What the sidecar records besides the config (all optional).
 struct ModelProvenance {
-  std::string data_description;  // e.g. "1000 expert rollouts on random classic scenarios"
-  std::string git_revision;      // empty when unknown
-  Json metrics = Json::object(); // final metrics (e.g. from TrainingSummary)
+  std::string data_description;   // e.g. "1000 expert rollouts on random classic scenarios"
+  std::string git_revision;       // empty when unknown
+  Json metrics = Json::object();  // final metrics (e.g. from TrainingSummary)
 };
 
 class CompileModel {

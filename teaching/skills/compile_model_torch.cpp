@@ -89,7 +89,8 @@ std::vector<Segmentation> CompileModel::segment(const std::vector<StepSequence>&
     const auto readout = compile_detail::hard_readout(impl_->net, batch);
     for (std::size_t i = first; i < last; ++i) {
       const ModelSteps& m = inputs[pending[i]];
-      const Segmentation model_segments = segments_from_boundaries(readout.boundaries[i - first], readout.skills[i - first], m.steps.length());
+      const Segmentation model_segments =
+          segments_from_boundaries(readout.boundaries[i - first], readout.skills[i - first], m.steps.length());
       out[pending[i]] = to_original_indices(model_segments, m);
     }
   }
@@ -145,8 +146,7 @@ CompileModel CompileModel::load(const std::filesystem::path& file, const std::st
   const std::string name = file.string();
   ModelFileContents contents = read_model_file(file);
   const JsonView header(contents.header, name);
-  if (!contents.header.is_object() || !contents.header.contains("format") ||
-      contents.header["format"] != kFormatName)
+  if (!contents.header.is_object() || !contents.header.contains("format") || contents.header["format"] != kFormatName)
     throw InputError(name, "not a CompILE model (header format is not \"" + std::string(kFormatName) + "\")");
   CompileConfig config = compile_config_from_json(header.at("config"));
   config.validate(name + ": $.config");
@@ -170,7 +170,8 @@ CompileModel CompileModel::load(const std::filesystem::path& file, const std::st
     const NamedTensor& src = contents.tensors[i];
     torch::Tensor& dst = *named[i].second;
     if (src.name != named[i].first)
-      throw InputError(name, "tensor " + std::to_string(i) + " is \"" + src.name + "\", expected \"" + named[i].first + "\"");
+      throw InputError(name,
+                       "tensor " + std::to_string(i) + " is \"" + src.name + "\", expected \"" + named[i].first + "\"");
     if (std::vector<std::int64_t>(dst.sizes().begin(), dst.sizes().end()) != src.shape)
       throw InputError(name, "tensor \"" + src.name + "\" has the wrong dimensions for the model's config");
     for (float v : src.values)

@@ -85,15 +85,15 @@ struct CompileNetwork {
 
 // ---- batches ------------------------------------------------------------------------------------------
 struct Batch {
-  std::int64_t size = 0;                // B
-  std::int64_t steps = 0;               // T_max (model steps)
-  std::vector<std::int64_t> lengths;    // sorted longest first
-  std::vector<std::size_t> source;      // batch row -> index in the caller's list
-  torch::Tensor states;                 // [T_max + 1, B, S] zero-padded (time-major; last step always padding)
-  torch::Tensor actions;                // [T_max + 1, B, A]
-  Packing encoder;                      // row b runs steps 0..lengths[b] (the extra step reads padding)
-  torch::Tensor pack_index;             // [N] packed entry -> t * B + b
-  torch::Tensor unpack_index;           // [(T_max+1) * B] -> packed entry, or N for "not computed"
+  std::int64_t size = 0;              // B
+  std::int64_t steps = 0;             // T_max (model steps)
+  std::vector<std::int64_t> lengths;  // sorted longest first
+  std::vector<std::size_t> source;    // batch row -> index in the caller's list
+  torch::Tensor states;               // [T_max + 1, B, S] zero-padded (time-major; last step always padding)
+  torch::Tensor actions;              // [T_max + 1, B, A]
+  Packing encoder;                    // row b runs steps 0..lengths[b] (the extra step reads padding)
+  torch::Tensor pack_index;           // [N] packed entry -> t * B + b
+  torch::Tensor unpack_index;         // [(T_max+1) * B] -> packed entry, or N for "not computed"
   // Diagnostic (CompileTrainer::fix_boundaries): [B][K-1] boundary positions 1..T_b in model steps, used
   // instead of sampled boundaries; empty = boundaries are sampled as usual.
   std::vector<std::vector<int>> fixed_boundaries;

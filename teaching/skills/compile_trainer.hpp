@@ -15,8 +15,8 @@
 // Deterministic: the same config (seed) and data on the same machine give byte-identical model files,
 // whatever the thread scheduling (runs share nothing).
 #include <functional>
-#include <memory>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "teaching/skills/compile_model.hpp"
@@ -24,11 +24,11 @@
 namespace sc {
 
 struct TrainingProgress {
-  int restart = 0;        // 0-based run of config.restarts (runs may report interleaved)
+  int restart = 0;  // 0-based run of config.restarts (runs may report interleaved)
   int restarts = 1;
-  int iteration = 0;      // 1-based
-  int iterations = 0;     // configured maximum
-  double loss = 0.0;      // training loss terms, mean over the iteration's trajectories
+  int iteration = 0;   // 1-based
+  int iterations = 0;  // configured maximum
+  double loss = 0.0;   // training loss terms, mean over the iteration's trajectories
   double nll_action = 0.0;
   double nll_state = 0.0;
   double kl_z = 0.0;
@@ -43,7 +43,7 @@ struct TrainingProgress {
 };
 
 struct TrainingSummary {
-  int restart = 0;                   // the run whose weights were kept (lowest validation NLL)
+  int restart = 0;                        // the run whose weights were kept (lowest validation NLL)
   std::vector<double> restart_valid_nll;  // best validation NLL of every run (NaN without a valid split)
   int iterations_run = 0;
   int best_iteration = 0;  // iteration whose weights were kept (0 = before the first: untrained, or as warm-started)

@@ -24,10 +24,14 @@ Json TrainingSummary::to_json() const {
   auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
   Json restarts = Json::array();
   for (double v : restart_valid_nll) restarts.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
-  return Json{{"restart", restart}, {"restart_valid_nll", std::move(restarts)},
-              {"iterations_run", iterations_run}, {"best_iteration", best_iteration},
-              {"best_valid_nll", num(best_valid_nll)}, {"final_loss", num(final_loss)},
-              {"seconds", seconds}, {"stopped_early", stopped_early},
+  return Json{{"restart", restart},
+              {"restart_valid_nll", std::move(restarts)},
+              {"iterations_run", iterations_run},
+              {"best_iteration", best_iteration},
+              {"best_valid_nll", num(best_valid_nll)},
+              {"final_loss", num(final_loss)},
+              {"seconds", seconds},
+              {"stopped_early", stopped_early},
               {"warm_start_boundaries", num(warm_start_boundaries)},
               {"warm_start_valid_nll", num(warm_start_valid_nll)}};
 }
@@ -52,8 +56,8 @@ namespace {
 using FixedPositions = std::vector<std::vector<int>>;
 
 // The batch of data[indices[i]] (with their fixed boundaries, if any), in that order.
-Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed, const std::vector<std::size_t>& indices,
-               const CompileConfig& config, bool supervise = false) {
+Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
+               const std::vector<std::size_t>& indices, const CompileConfig& config, bool supervise = false) {
   std::vector<const StepSequence*> steps;
   std::vector<const std::vector<int>*> boundaries;
   for (std::size_t i : indices) {
@@ -98,7 +102,8 @@ FixedPositions to_fixed_positions(const std::vector<std::vector<int>>& boundarie
     int previous = 0;
     for (int b : boundaries[i]) {
       if (b <= previous || b >= length)
-        throw InputError(where, "boundary " + std::to_string(b) + " is not ascending inside 1.." + std::to_string(length - 1));
+        throw InputError(where,
+                         "boundary " + std::to_string(b) + " is not ascending inside 1.." + std::to_string(length - 1));
       previous = b;
       const auto at = std::lower_bound(begin.begin(), begin.end(), b) - begin.begin();
       positions.push_back(std::clamp(static_cast<int>(at), 1, std::max(1, model_length)));
@@ -145,8 +150,9 @@ void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at
                     const std::vector<std::size_t>& order, TrainingProgress& p, bool supervise = false) {
   const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
   for (std::size_t first = 0; first < order.size(); first += batch_size) {
-    const std::vector<std::size_t> chunk(order.begin() + static_cast<std::ptrdiff_t>(first),
-                                         order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), first + batch_size)));
+    const std::vector<std::size_t> chunk(
+        order.begin() + static_cast<std::ptrdiff_t>(first),
+        order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), first + batch_size)));
     const Batch batch = batch_of(train_steps, fixed, chunk, net.config, supervise);
     const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
     optimizer.zero_grad();
@@ -291,8 +297,10 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   if (usable.empty()) throw InputError("training data", "every trajectory is empty");
   FixedPositions fixed_train, fixed_valid;
   if (fixed_) {
-    fixed_train = to_fixed_positions(fixed_train_, train_steps, config_.num_segments, "fixed boundaries of training trajectory");
-    fixed_valid = to_fixed_positions(fixed_valid_, valid_steps, config_.num_segments, "fixed boundaries of validation trajectory");
+    fixed_train =
+        to_fixed_positions(fixed_train_, train_steps, config_.num_segments, "fixed boundaries of training trajectory");
+    fixed_valid = to_fixed_positions(fixed_valid_, valid_steps, config_.num_segments,
+                                     "fixed boundaries of validation trajectory");
   }
   const std::vector<Batch> valid_batches = fixed_batches(valid_steps, fixed_valid, config_);
   FixedPositions warm;

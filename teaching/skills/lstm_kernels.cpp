@@ -30,8 +30,8 @@ constexpr float kExpHi = 88.3762626647949f, kExpLo = -88.3762626647949f;
 constexpr float kLog2e = 1.44269504088896341f, kC1 = 0.693359375f, kC2 = -2.12194440e-4f;
 constexpr float kP0 = 1.9875691500e-4f, kP1 = 1.3981999507e-3f, kP2 = 8.3334519073e-3f, kP3 = 4.1665795894e-2f,
                 kP4 = 1.6666665459e-1f, kP5 = 5.0000001201e-1f;
-constexpr float kT0 = -5.70498872745e-3f, kT1 = 2.06390887954e-2f, kT2 = -5.37397155531e-2f,
-                kT3 = 1.33314422036e-1f, kT4 = -3.33332819422e-1f;
+constexpr float kT0 = -5.70498872745e-3f, kT1 = 2.06390887954e-2f, kT2 = -5.37397155531e-2f, kT3 = 1.33314422036e-1f,
+                kT4 = -3.33332819422e-1f;
 constexpr float kTanhSmall = 0.625f;  // below: odd polynomial; above: 1 - 2 / (exp(2x) + 1)
 
 float exp_scalar(float x) {
@@ -125,9 +125,8 @@ void tanh_span(const float* x, float* y, std::int64_t count) {
 
 }  // namespace
 
-void blas_sgemm(char trans_a, char trans_b, std::int64_t m, std::int64_t n, std::int64_t k, float alpha,
-                const float* a, std::int64_t lda, const float* b, std::int64_t ldb, float beta, float* c,
-                std::int64_t ldc) {
+void blas_sgemm(char trans_a, char trans_b, std::int64_t m, std::int64_t n, std::int64_t k, float alpha, const float* a,
+                std::int64_t lda, const float* b, std::int64_t ldb, float beta, float* c, std::int64_t ldc) {
   static const SgemmFn sgemm = find_sgemm();
   if (m == 0 || n == 0) return;
   const int mi = static_cast<int>(m), ni = static_cast<int>(n), ki = static_cast<int>(k);

@@ -9,9 +9,8 @@ namespace sc::compile_detail {
 // C = alpha * op(A) * op(B) + beta * C in BLAS column-major convention, through the sgemm_ of the BLAS that
 // LibTorch itself uses (OpenBLAS here), so a product gives exactly what the equivalent torch op gives.
 // trans_a/trans_b: 'N' or 'T'.
-void blas_sgemm(char trans_a, char trans_b, std::int64_t m, std::int64_t n, std::int64_t k, float alpha,
-                const float* a, std::int64_t lda, const float* b, std::int64_t ldb, float beta, float* c,
-                std::int64_t ldc);
+void blas_sgemm(char trans_a, char trans_b, std::int64_t m, std::int64_t n, std::int64_t k, float alpha, const float* a,
+                std::int64_t lda, const float* b, std::int64_t ldb, float beta, float* c, std::int64_t ldc);
 
 // Row-major rows [n, 4H] of pre-activations (i, f, o, g): sigmoid on i, f, o and tanh on g, in place.
 void activate_gates(float* gates, std::int64_t n, std::int64_t hid);

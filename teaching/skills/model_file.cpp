@@ -36,7 +36,8 @@ void put(std::string& out, T value) {
 // Sequential reader that turns every overrun into a one-line InputError.
 class Reader {
  public:
-  Reader(const std::string& bytes, std::size_t end, std::string file) : bytes_(bytes), end_(end), file_(std::move(file)) {}
+  Reader(const std::string& bytes, std::size_t end, std::string file)
+      : bytes_(bytes), end_(end), file_(std::move(file)) {}
   template <typename T>
   T get(const char* what) {
     T value;
@@ -100,12 +101,14 @@ ModelFileContents read_model_file(const std::filesystem::path& file) {
   if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
     throw InputError(name, "not a SkillCoach model file (wrong magic bytes)");
   const std::size_t minimum = sizeof(kMagic) + 4 + 4 + 4 + 8;
-  if (bytes.size() < minimum) throw InputError(name, "truncated model file (" + std::to_string(bytes.size()) + " bytes)");
+  if (bytes.size() < minimum)
+    throw InputError(name, "truncated model file (" + std::to_string(bytes.size()) + " bytes)");
   std::uint32_t version;
   std::memcpy(&version, bytes.data() + sizeof(kMagic), sizeof(version));
   if (version > kModelFormatVersion)
-    throw InputError(name, "model format version " + std::to_string(version) + " is newer than this program supports (" +
-                               std::to_string(kModelFormatVersion) + "); update SkillCoach or retrain the model");
+    throw InputError(name, "model format version " + std::to_string(version) +
+                               " is newer than this program supports (" + std::to_string(kModelFormatVersion) +
+                               "); update SkillCoach or retrain the model");
   if (version == 0) throw InputError(name, "corrupt model file: format version 0");
   const std::size_t body = bytes.size() - 8;
   std::uint64_t stored;
@@ -123,7 +126,8 @@ ModelFileContents read_model_file(const std::filesystem::path& file) {
   for (std::uint32_t i = 0; i < count; ++i) {
     NamedTensor t;
     const auto name_length = r.get<std::uint32_t>("a tensor name length");
-    if (name_length > kMaxNameLength) r.fail("corrupt model file: tensor name of " + std::to_string(name_length) + " bytes");
+    if (name_length > kMaxNameLength)
+      r.fail("corrupt model file: tensor name of " + std::to_string(name_length) + " bytes");
     t.name = r.text(name_length, "a tensor name");
     const auto rank = r.get<std::uint32_t>("a tensor rank");
     if (rank > kMaxRank) r.fail("corrupt model file: tensor \"" + t.name + "\" has rank " + std::to_string(rank));

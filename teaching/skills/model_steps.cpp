@@ -71,8 +71,7 @@ Segmentation to_original_indices(const Segmentation& model_segments, const Model
   return out;
 }
 
-Segmentation segments_from_boundaries(const std::vector<int>& boundaries, const std::vector<int>& skills,
-                                      int length) {
+Segmentation segments_from_boundaries(const std::vector<int>& boundaries, const std::vector<int>& skills, int length) {
   Segmentation out;
   int start = 0;
   for (std::size_t k = 0; k < boundaries.size(); ++k) {

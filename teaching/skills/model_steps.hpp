@@ -28,7 +28,6 @@ Segmentation to_original_indices(const Segmentation& model_segments, const Model
 // Reference readout (reference-facts §3.7): segment k runs from the largest earlier boundary to its own
 // boundary; the last segment ends at `length`. Empty segments (start >= end, which happens when a later
 // boundary falls before an earlier one) are dropped, so the result covers [0, length) without gaps.
-Segmentation segments_from_boundaries(const std::vector<int>& boundaries, const std::vector<int>& skills,
-                                      int length);
+Segmentation segments_from_boundaries(const std::vector<int>& boundaries, const std::vector<int>& skills, int length);
 
 }  // namespace sc

@@ -22,7 +22,6 @@ Packing Packing::from_lengths(const std::vector<std::int64_t>& lengths) {
   return p;
 }
 
-
 PackedLstmRun::PackedLstmRun(const Packing& packing, std::int64_t hid, const torch::TensorOptions& opts) {
   const std::int64_t n_total = packing.total();
   gates = torch::empty({n_total, 4 * hid}, opts);
@@ -32,8 +31,9 @@ PackedLstmRun::PackedLstmRun(const Packing& packing, std::int64_t hid, const tor
   c_out = torch::empty({n_total, hid}, opts);
 }
 
-void PackedLstmRun::step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t, const torch::Tensor& h_init,
-                         const torch::Tensor& c_init, const torch::Tensor& w_hh, const torch::Tensor& mask) {
+void PackedLstmRun::step(const Packing& packing, std::size_t t, const torch::Tensor& xproj_t,
+                         const torch::Tensor& h_init, const torch::Tensor& c_init, const torch::Tensor& w_hh,
+                         const torch::Tensor& mask) {
   TORCH_CHECK(xproj_t.is_contiguous() && h_init.is_contiguous() && c_init.is_contiguous() && w_hh.is_contiguous(),
               "PackedLstmRun::step needs contiguous tensors");
   const float* m = mask.defined() && mask.numel() > 0 ? mask.data_ptr<float>() : nullptr;
@@ -174,7 +174,8 @@ class PackedLstmFunction : public torch::autograd::Function<PackedLstmFunction> 
       const std::int64_t n = packing->active[t];
       if (n == 0) break;
       const float* src = t == 0 ? h_init.data_ptr<float>() : h_out.data_ptr<float>() + packing->offset[t - 1] * hid;
-      std::memcpy(h_prev.data_ptr<float>() + packing->offset[t] * hid, src, sizeof(float) * static_cast<std::size_t>(n * hid));
+      std::memcpy(h_prev.data_ptr<float>() + packing->offset[t] * hid, src,
+                  sizeof(float) * static_cast<std::size_t>(n * hid));
     }
     Tensor d_w_hh = d_gates.t().mm(h_prev);
     return {d_gates, dh, dc, d_w_hh, d_mask, Tensor(), Tensor(), Tensor()};
@@ -189,9 +190,9 @@ torch::Tensor packed_lstm(const torch::Tensor& xproj, const torch::Tensor& h0, c
   // Custom autograd functions reject undefined inputs: "no initial state" becomes zeros and "no mask" an
   // empty tensor.
   const torch::Tensor zeros = torch::zeros({packing.rows, w_hh.size(1)}, xproj.options());
-  return PackedLstmFunction::apply(xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh.contiguous(),
-                                   mask.defined() ? mask.contiguous() : torch::empty({0}, xproj.options()),
-                                   packing.active, packing.rows, replay);
+  return PackedLstmFunction::apply(
+      xproj.contiguous(), h0.defined() ? h0 : zeros, c0.defined() ? c0 : zeros, w_hh.contiguous(),
+      mask.defined() ? mask.contiguous() : torch::empty({0}, xproj.options()), packing.active, packing.rows, replay);
 }
 
 }  // namespace sc::compile_detail

@@ -92,8 +92,8 @@ std::vector<int> strongest(std::vector<Candidate> candidates, const RepeatBounda
   std::vector<int> kept;
   for (const auto& c : candidates) {
     if (static_cast<int>(kept.size()) >= config.max_boundaries) break;
-    const bool far = std::all_of(kept.begin(), kept.end(),
-                                 [&](int k) { return std::abs(k - c.position) >= config.min_separation; });
+    const bool far =
+        std::all_of(kept.begin(), kept.end(), [&](int k) { return std::abs(k - c.position) >= config.min_separation; });
     if (far) kept.push_back(c.position);
   }
   std::sort(kept.begin(), kept.end());
@@ -105,7 +105,8 @@ std::vector<int> strongest(std::vector<Candidate> candidates, const RepeatBounda
 std::vector<std::vector<int>> find_repeat_boundaries(const std::vector<StepSequence>& demos,
                                                      const RepeatBoundaryConfig& config) {
   if (config.context < 1 || config.max_boundaries < 0 || config.min_separation < 1 || !(config.token_precision > 0.0))
-    throw InputError("repeat boundaries", "context and min_separation must be >= 1, max_boundaries >= 0, precision > 0");
+    throw InputError("repeat boundaries",
+                     "context and min_separation must be >= 1, max_boundaries >= 0, precision > 0");
   const auto tokens = tokenize(demos, config.token_precision);
   const auto n = static_cast<std::size_t>(config.context);
   std::vector<WindowHash> hashes;
@@ -116,7 +117,7 @@ std::vector<std::vector<int>> find_repeat_boundaries(const std::vector<StepSeque
     const std::size_t t_len = tok.size();
     for (std::size_t p = 1; p <= t_len; ++p)  // the context before p and what follows it (the end, at p = T)
       forward.add(h.key(p > n ? p - n : 0, p), p < t_len ? tok[p] : kEdgeToken);
-    for (std::size_t p = 0; p < t_len; ++p)   // the context from p on and what precedes it
+    for (std::size_t p = 0; p < t_len; ++p)  // the context from p on and what precedes it
       backward.add(h.key(p, std::min(t_len, p + n)), p > 0 ? tok[p - 1] : kEdgeToken);
   }
   std::vector<std::vector<int>> out;

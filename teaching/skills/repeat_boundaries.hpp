@@ -26,10 +26,10 @@
 namespace sc {
 
 struct RepeatBoundaryConfig {
-  int context = 64;              // tokens of context on each side
-  int max_boundaries = 7;        // per demonstration (CompILE: K - 1)
-  int min_separation = 1;        // actions between two kept boundaries
-  double token_precision = 1e-4; // coordinates equal up to this count as the same step
+  int context = 64;               // tokens of context on each side
+  int max_boundaries = 7;         // per demonstration (CompILE: K - 1)
+  int min_separation = 1;         // actions between two kept boundaries
+  double token_precision = 1e-4;  // coordinates equal up to this count as the same step
 };
 
 // Interior boundaries (action indices in 1..T-1, ascending) of every demonstration, parallel to `demos`.

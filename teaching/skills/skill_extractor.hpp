@@ -50,8 +50,8 @@ class SkillExtractor {
     for (const auto& t : trajectories) out.push_back(extract(t));
     return out;
   }
-  virtual int num_skills() const = 0;   // skill ids are in [0, num_skills())
-  virtual std::string name() const = 0; // "compile" or "time-heuristic"
+  virtual int num_skills() const = 0;    // skill ids are in [0, num_skills())
+  virtual std::string name() const = 0;  // "compile" or "time-heuristic"
 };
 
 }  // namespace sc

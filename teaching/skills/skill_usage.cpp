@@ -23,10 +23,14 @@ SkillUsageSummary skill_usage(const std::vector<Segmentation>& segmentations) {
 Json to_json(const SkillUsageSummary& usage) {
   Json per_skill = Json::array();
   for (const SkillUsage& u : usage.skills)
-    per_skill.push_back({{"skill", u.skill}, {"segments", u.segments}, {"steps", u.steps},
+    per_skill.push_back({{"skill", u.skill},
+                         {"segments", u.segments},
+                         {"steps", u.steps},
                          {"mean_segment_length", u.mean_segment_length()}});
-  return Json{{"skills_used", usage.skills_used()}, {"segments", usage.segments},
-              {"mean_segment_length", usage.mean_segment_length()}, {"per_skill", std::move(per_skill)}};
+  return Json{{"skills_used", usage.skills_used()},
+              {"segments", usage.segments},
+              {"mean_segment_length", usage.mean_segment_length()},
+              {"per_skill", std::move(per_skill)}};
 }
 
 }  // namespace sc

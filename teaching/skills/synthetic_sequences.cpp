@@ -18,9 +18,8 @@ void push_step(PlantedSequence& p, const std::vector<float>& state, float a0, fl
 
 }  // namespace
 
-std::vector<PlantedSequence> constant_primitive_sequences(int count, int segments, int primitive_count,
-                                                          int min_length, int max_length, int state_dim,
-                                                          std::uint64_t seed) {
+std::vector<PlantedSequence> constant_primitive_sequences(int count, int segments, int primitive_count, int min_length,
+                                                          int max_length, int state_dim, std::uint64_t seed) {
   Rng rng(seed);
   // Distinct directions spread around the circle, magnitude 0.8 (inside the decoder's tanh range).
   std::vector<std::pair<float, float>> primitive;
@@ -37,11 +36,13 @@ std::vector<PlantedSequence> constant_primitive_sequences(int count, int segment
     int previous = -1;
     for (int s = 0; s < segments; ++s) {
       int id;
-      do id = static_cast<int>(rng.below(static_cast<std::uint64_t>(primitive_count))); while (id == previous);
+      do id = static_cast<int>(rng.below(static_cast<std::uint64_t>(primitive_count)));
+      while (id == previous);
       previous = id;
       const int len = min_length + static_cast<int>(rng.below(static_cast<std::uint64_t>(max_length - min_length + 1)));
       for (int t = 0; t < len; ++t) {
-        push_step(p, state, primitive[static_cast<std::size_t>(id)].first, primitive[static_cast<std::size_t>(id)].second);
+        push_step(p, state, primitive[static_cast<std::size_t>(id)].first,
+                  primitive[static_cast<std::size_t>(id)].second);
         if (state_dim >= 2) {
           state[0] += 0.1f * primitive[static_cast<std::size_t>(id)].first;
           state[1] += 0.1f * primitive[static_cast<std::size_t>(id)].second;
@@ -63,11 +64,13 @@ std::vector<PlantedSequence> repeated_symbol_sequences(int count, int segments, 
   Rng symbol_rng(symbol_seed);
   auto step_of = [](std::uint64_t direction) {
     const double angle = 2.0 * std::numbers::pi * static_cast<double>(direction % 16) / 16.0;
-    return std::pair<float, float>(static_cast<float>(0.8 * std::cos(angle)), static_cast<float>(0.8 * std::sin(angle)));
+    return std::pair<float, float>(static_cast<float>(0.8 * std::cos(angle)),
+                                   static_cast<float>(0.8 * std::sin(angle)));
   };
   std::vector<std::vector<std::pair<float, float>>> symbols(static_cast<std::size_t>(symbol_count));
   for (std::size_t i = 0; i < symbols.size(); ++i) {
-    const int len = min_length + static_cast<int>(symbol_rng.below(static_cast<std::uint64_t>(max_length - min_length + 1)));
+    const int len =
+        min_length + static_cast<int>(symbol_rng.below(static_cast<std::uint64_t>(max_length - min_length + 1)));
     symbols[i].push_back(step_of(i));
     for (int t = 1; t + 1 < len; ++t) symbols[i].push_back(step_of(symbol_rng.below(16)));
     symbols[i].push_back(step_of(i + 8));
@@ -80,7 +83,8 @@ std::vector<PlantedSequence> repeated_symbol_sequences(int count, int segments, 
     int previous = -1;
     for (int s = 0; s < segments; ++s) {
       int id;
-      do id = static_cast<int>(rng.below(static_cast<std::uint64_t>(symbol_count))); while (id == previous);
+      do id = static_cast<int>(rng.below(static_cast<std::uint64_t>(symbol_count)));
+      while (id == previous);
       previous = id;
       for (const auto& [a0, a1] : symbols[static_cast<std::size_t>(id)]) push_step(p, {}, a0, a1);
       p.boundaries.push_back(p.steps.length());
@@ -113,10 +117,18 @@ std::vector<PlantedSequence> parking_like_sequences(int count, int min_length, i
         accel = rng.uniform(-1, 1);
         steer = rng.uniform(-0.8, 0.8);
       }
-      const std::vector<float> state{static_cast<float>(x / 100), static_cast<float>(y / 100),
-                                     static_cast<float>(speed * std::cos(heading) / 5), static_cast<float>(speed * std::sin(heading) / 5),
-                                     static_cast<float>(std::cos(heading)), static_cast<float>(std::sin(heading)),
-                                     static_cast<float>(goal_x), static_cast<float>(goal_y), 0.0f, 0.0f, 0.0f, 1.0f};
+      const std::vector<float> state{static_cast<float>(x / 100),
+                                     static_cast<float>(y / 100),
+                                     static_cast<float>(speed * std::cos(heading) / 5),
+                                     static_cast<float>(speed * std::sin(heading) / 5),
+                                     static_cast<float>(std::cos(heading)),
+                                     static_cast<float>(std::sin(heading)),
+                                     static_cast<float>(goal_x),
+                                     static_cast<float>(goal_y),
+                                     0.0f,
+                                     0.0f,
+                                     0.0f,
+                                     1.0f};
       const double a = std::clamp(accel + 0.1 * rng.normal(), -0.99, 0.99);
       const double st = std::clamp(steer + 0.1 * rng.normal(), -0.99, 0.99);
       push_step(p, state, static_cast<float>(a), static_cast<float>(st));

@@ -17,9 +17,8 @@ struct PlantedSequence {
 // Each sequence chains `segments` primitives drawn from `primitive_count` distinct constant actions
 // (never the same primitive twice in a row), each held for a random length in [min_length, max_length].
 // States (state_dim >= 2) integrate the actions as a position, padded with zeros.
-std::vector<PlantedSequence> constant_primitive_sequences(int count, int segments, int primitive_count,
-                                                          int min_length, int max_length, int state_dim,
-                                                          std::uint64_t seed);
+std::vector<PlantedSequence> constant_primitive_sequences(int count, int segments, int primitive_count, int min_length,
+                                                          int max_length, int state_dim, std::uint64_t seed);
 
 // Each sequence chains `segments` symbols (never the same twice in a row) from `symbol_count` <= 8 fixed
 // symbols: a symbol is a fixed sequence of min_length..max_length (>= 2) unit steps in 16 directions, the

@@ -101,7 +101,8 @@ BcDataset sample_pairs(const BcDataset& data, int count, std::uint64_t seed) {
   std::vector<int> all(static_cast<std::size_t>(data.size()));
   for (int i = 0; i < data.size(); ++i) all[static_cast<std::size_t>(i)] = i;
   std::vector<bool> kept(all.size(), false);
-  for (int i : uniform_sample(all, static_cast<std::size_t>(std::max(count, 0)), seed)) kept[static_cast<std::size_t>(i)] = true;
+  for (int i : uniform_sample(all, static_cast<std::size_t>(std::max(count, 0)), seed))
+    kept[static_cast<std::size_t>(i)] = true;
   return pairs_where(data, kept);
 }
 

@@ -15,7 +15,8 @@
 
 namespace sc {
 
-// ParkingExpert plans of scenarios parking_pool_scenario(seed, 0..count-1, region) (count x ~30 ms). progress(done) after each plan, if set.
+// ParkingExpert plans of scenarios parking_pool_scenario(seed, 0..count-1, region) (count x ~30 ms). progress(done)
+// after each plan, if set.
 std::vector<ParkingTrial> plan_expert_drives(int count, std::uint64_t seed, GoalRegion region,
                                              const std::function<void(int)>& progress = {});
 

@@ -31,8 +31,8 @@ int total_steps(const std::vector<PracticeItem>& items) {
 std::vector<PracticeItem> material_items(StudyCondition condition, const FinetuneMaterial& material, int min_steps,
                                          std::size_t min_items, std::uint64_t seed) {
   for (int budget = std::max(min_steps, 16);; budget *= 2) {
-    std::vector<PracticeItem> items = make_curriculum(condition, inputs_of(material, seed),
-                                                      finetune_config(material, budget)).items;
+    std::vector<PracticeItem> items =
+        make_curriculum(condition, inputs_of(material, seed), finetune_config(material, budget)).items;
     if ((total_steps(items) >= min_steps && items.size() >= min_items) || budget > (1 << 24)) return items;
   }
 }

@@ -37,7 +37,8 @@ void LearningCurveConfig::validate() const {
 }
 
 LearningCurve fixed_drill_learning_curve(const BcPolicy& student, const BcDataset& own_pairs,
-                                         const FinetuneMaterial& material, const std::vector<ParkingScenario>& scenarios,
+                                         const FinetuneMaterial& material,
+                                         const std::vector<ParkingScenario>& scenarios,
                                          const LearningCurveConfig& config) {
   config.validate();
   if (static_cast<int>(scenarios.size()) < config.rollouts)

@@ -26,8 +26,9 @@ ParkingTrial rollout_parking_student(const BcPolicy& policy, const ParkingScenar
 }
 
 double parking_episode_score(const ParkingTrial& trial) {
-  if (trial.rewards.empty()) return std::min(parking_reward(make_observation(initial_vehicle_state(trial.scenario),
-                                                                             goal_pose(trial.scenario))), 0.0);
+  if (trial.rewards.empty())
+    return std::min(parking_reward(make_observation(initial_vehicle_state(trial.scenario), goal_pose(trial.scenario))),
+                    0.0);
   return std::min(trial.rewards.back(), 0.0);
 }
 

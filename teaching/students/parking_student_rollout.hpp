@@ -17,9 +17,9 @@ ParkingTrial rollout_parking_student(const BcPolicy& policy, const ParkingScenar
 double parking_episode_score(const ParkingTrial& trial);
 
 struct ParkingScore {
-  double mean_reward = 0.0;    // mean episode score (last-step reward) over the scenarios
-  double step_reward = 0.0;    // mean over the scenarios of the episode's mean per-step reward
-  double success_rate = 0.0;   // share of episodes that parked
+  double mean_reward = 0.0;   // mean episode score (last-step reward) over the scenarios
+  double step_reward = 0.0;   // mean over the scenarios of the episode's mean per-step reward
+  double success_rate = 0.0;  // share of episodes that parked
 };
 
 // The episode's mean per-step reward (the start's reward when it has no steps): unlike the last step's

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "engine/core/error.hpp"
-#include "engine/core/task_kind.hpp"
 #include "engine/core/rng.hpp"
+#include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
 #include "teaching/skills/compile_model.hpp"
@@ -20,8 +20,16 @@ namespace sc {
 namespace {
 
 // Independent, reorder-stable seeds for each use (streams of Rng::fork).
-enum SeedStream : std::uint64_t { kStudentInit = 1, kEvaluationSet = 2, kFinetuneData = 3, kFinetuneTraining = 4,
-                                  kRehearsal = 5, kStudentDrives = 6, kHeldoutDrives = 7, kCurve = 8 };
+enum SeedStream : std::uint64_t {
+  kStudentInit = 1,
+  kEvaluationSet = 2,
+  kFinetuneData = 3,
+  kFinetuneTraining = 4,
+  kRehearsal = 5,
+  kStudentDrives = 6,
+  kHeldoutDrives = 7,
+  kCurve = 8
+};
 
 std::uint64_t derived_seed(std::uint64_t seed, SeedStream stream, std::uint64_t a = 0, std::uint64_t b = 0) {
   return Rng(seed).fork(stream).fork(a).fork(b).next_u64();
@@ -47,7 +55,8 @@ std::vector<ParkingScenario> evaluation_set(std::vector<ParkingScenario> taken, 
 
 // Alg. 2 on the student's own rollouts of the diagnosis scenarios.
 void diagnose(const TaskKit& kit, const std::vector<int>& picks, const StudentExperimentConfig& config,
-              const BcPolicy& policy, StudentResult& out, const ExperimentProgress& progress, const std::string& phase) {
+              const BcPolicy& policy, StudentResult& out, const ExperimentProgress& progress,
+              const std::string& phase) {
   std::vector<ExpertiseTrial> trials;
   for (std::size_t k = 0; k < picks.size(); ++k) {
     const ExpertDemo& demo = kit.expert_pool()[static_cast<std::size_t>(picks[k])];
@@ -73,9 +82,9 @@ StudentDrives plan_student_drives(const StudentExperimentConfig& config, Student
   StudentDrives d;
   const int total = config.student_drives + config.heldout_drives;
   const std::string phase = "planning expert drives";
-  d.training = bc_dataset_from_trials(plan_expert_drives(config.student_drives, derived_seed(config.seed, kStudentDrives),
-                                                         GoalRegion::WholeLot,
-                                                         [&](int done) { report(progress, phase, done, total); }));
+  d.training = bc_dataset_from_trials(
+      plan_expert_drives(config.student_drives, derived_seed(config.seed, kStudentDrives), GoalRegion::WholeLot,
+                         [&](int done) { report(progress, phase, done, total); }));
   const std::vector<ParkingTrial> heldout =
       plan_expert_drives(config.heldout_drives, derived_seed(config.seed, kHeldoutDrives), GoalRegion::WholeLot,
                          [&](int done) { report(progress, phase, config.student_drives + done, total); });
@@ -150,7 +159,8 @@ LearningCurve learning_curve(const SyntheticStudent& student, const FinetuneMate
   curve.rehearsal = config.finetune_rehearsal;
   curve.seed = derived_seed(config.seed, kCurve);
   std::vector<ParkingScenario> scenarios;
-  for (int i = 0; i < curve.rollouts; ++i) scenarios.push_back(parking_pool_scenario(derived_seed(curve.seed, kEvaluationSet), i, config.region));
+  for (int i = 0; i < curve.rollouts; ++i)
+    scenarios.push_back(parking_pool_scenario(derived_seed(curve.seed, kEvaluationSet), i, config.region));
   LearningCurve out = fixed_drill_learning_curve(student.policy, student.training_data, material, scenarios, curve);
   report(progress, "learning curve", 1, 1);
   return out;
@@ -193,11 +203,14 @@ void StudentExperimentConfig::validate() const {
   positive(finetune_epochs, "finetune_epochs");
   positive(evaluation_sets, "evaluation_sets");
   positive(scenarios_per_set, "scenarios_per_set");
-  if (finetune_pairs < 0) throw InputError("synthetic students", "finetune_pairs must be >= 0 (0 = one Ind. Drills round)");
+  if (finetune_pairs < 0)
+    throw InputError("synthetic students", "finetune_pairs must be >= 0 (0 = one Ind. Drills round)");
   if (!(finetune_rehearsal >= 0.0 && finetune_rehearsal <= 100.0))
-    throw InputError("synthetic students", "finetune_rehearsal must lie in [0, 100], got " + std::to_string(finetune_rehearsal));
+    throw InputError("synthetic students",
+                     "finetune_rehearsal must lie in [0, 100], got " + std::to_string(finetune_rehearsal));
   if (!(finetune_learning_rate > 0.0 && finetune_learning_rate <= 1.0))
-    throw InputError("synthetic students", "finetune_learning_rate must lie in (0, 1], got " + std::to_string(finetune_learning_rate));
+    throw InputError("synthetic students",
+                     "finetune_learning_rate must lie in (0, 1], got " + std::to_string(finetune_learning_rate));
   for (const SyntheticStudentRecipe& r : students) positive(r.epochs, "student epochs");
   positive(reference.epochs, "reference student epochs");
   if (learning_curve) curve.validate();
@@ -212,7 +225,8 @@ const ConditionResult& StudentResult::of(StudyCondition condition) const {
 StudentExperimentResult run_student_experiment(const TaskKit& kit, const StudentExperimentConfig& config,
                                                const ExperimentProgress& progress) {
   config.validate();
-  if (task_kind_of(kit.task()) != TaskKind::parking) throw InputError("synthetic students", "the experiment needs the parking kit");
+  if (task_kind_of(kit.task()) != TaskKind::parking)
+    throw InputError("synthetic students", "the experiment needs the parking kit");
   configure_torch_threads();
   StudentExperimentResult result;
   result.config = config;
@@ -232,10 +246,11 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
 
   report(progress, "training fully trained", 0, 1);
   const std::size_t reference_stream = config.students.size();
-  const SyntheticStudent reference =
-      train_and_measure(config.reference, drives, derived_seed(config.seed, kStudentInit, reference_stream), result.reference);
+  const SyntheticStudent reference = train_and_measure(
+      config.reference, drives, derived_seed(config.seed, kStudentInit, reference_stream), result.reference);
   report(progress, "training fully trained", 1, 1);
-  diagnose(kit, result.diagnosis_scenarios, config, reference.policy, result.reference, progress, "diagnosing fully trained");
+  diagnose(kit, result.diagnosis_scenarios, config, reference.policy, result.reference, progress,
+           "diagnosing fully trained");
   for (const std::vector<ParkingScenario>& set : sets) {
     const ParkingScore before = score_parking_student(reference.policy, set);
     result.reference.before_reward.push_back(before.mean_reward);
@@ -247,11 +262,13 @@ StudentExperimentResult run_student_experiment(const TaskKit& kit, const Student
     const std::string name(student_name(config.students[s].kind));
     report(progress, "training " + name, 0, 1);
     StudentResult r;
-    const SyntheticStudent student = train_and_measure(config.students[s], drives, derived_seed(config.seed, kStudentInit, s), r);
+    const SyntheticStudent student =
+        train_and_measure(config.students[s], drives, derived_seed(config.seed, kStudentInit, s), r);
     report(progress, "training " + name, 1, 1);
     diagnose(kit, result.diagnosis_scenarios, config, student.policy, r, progress, "diagnosing " + name);
     const FinetuneMaterial material{demo_steps(pool), demo_skills(pool), r.diagnosis, config.num_targets};
-    for (StudyCondition c : kFinetuneConditions) r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}, {}, {}, {}});
+    for (StudyCondition c : kFinetuneConditions)
+      r.conditions.push_back(ConditionResult{c, {}, {}, {}, {}, {}, {}, {}, {}});
     if (config.learning_curve && r.recipe.kind == SyntheticStudentKind::ReversingDifficulty)
       result.curve = learning_curve(student, material, config, progress);
     const int units = config.evaluation_sets * (1 + static_cast<int>(r.conditions.size()));

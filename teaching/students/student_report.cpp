@@ -67,11 +67,12 @@ std::string header_lines(const StudentExperimentResult& result) {
   out += "students cloned on " + std::to_string(c.student_drives) + " other expert drives (" +
          std::to_string(result.student_pairs) + " pairs); measured on " + std::to_string(c.heldout_drives) +
          " held-out drives (" + std::to_string(result.heldout_pairs) + " pairs)\n";
-  out += "fine-tuning: " + std::to_string(c.finetune_epochs) + " epochs at lr " + format("%g", c.finetune_learning_rate) +
-         " on equal-size data per set";
+  out += "fine-tuning: " + std::to_string(c.finetune_epochs) + " epochs at lr " +
+         format("%g", c.finetune_learning_rate) + " on equal-size data per set";
   if (c.finetune_pairs > 0) out += " (" + std::to_string(c.finetune_pairs) + " pairs)";
   if (c.finetune_rehearsal > 0)
-    out += ", each condition's data plus " + format("%g", c.finetune_rehearsal) + "x as many of the student's own pairs (rehearsal)";
+    out += ", each condition's data plus " + format("%g", c.finetune_rehearsal) +
+           "x as many of the student's own pairs (rehearsal)";
   return out + "\n";
 }
 
@@ -86,8 +87,9 @@ void student_line(std::string& out, const StudentResult& s) {
 }
 
 std::string students_lines(const StudentExperimentResult& result) {
-  std::string out = "\nstudent               epochs keep  pairs   held-out MSE: all / reverse / forward   "
-                    "success  last-step  per-step\n";
+  std::string out =
+      "\nstudent               epochs keep  pairs   held-out MSE: all / reverse / forward   "
+      "success  last-step  per-step\n";
   student_line(out, result.reference);
   for (const StudentResult& s : result.students) student_line(out, s);
   cell(out, "expert planner", 21);
@@ -119,7 +121,9 @@ std::string diagnosis_lines(const StudentExperimentResult& result, const TaskKit
 }
 
 std::string comparison_lines(const StudentExperimentResult& result) {
-  std::string out = "\nWilcoxon signed-rank tests, paired by set (two-sided; * p < .05): last-step reward | per-step reward | success\n";
+  std::string out =
+      "\nWilcoxon signed-rank tests, paired by set (two-sided; * p < .05): last-step reward | per-step reward | "
+      "success\n";
   for (const ConditionComparison& cmp : compare_conditions(result)) {
     out += "  ";
     cell(out, student_name(result.students[static_cast<std::size_t>(cmp.student)].recipe.kind), 21);
@@ -145,8 +149,8 @@ std::string curve_lines(const StudentExperimentResult& result) {
   out += "), " + std::to_string(result.config.curve.rollouts) + " rollouts per point\n";
   out += "  epochs  reward (last step)  reward (per step)  success\n";
   for (const LearningCurvePoint& p : c.points)
-    out += format("  %6.0f", p.epochs) + format("  %18.4f", p.score.mean_reward) + format("  %17.4f", p.score.step_reward) +
-           format("  %6.1f%%\n", 100.0 * p.score.success_rate);
+    out += format("  %6.0f", p.epochs) + format("  %18.4f", p.score.mean_reward) +
+           format("  %17.4f", p.score.step_reward) + format("  %6.1f%%\n", 100.0 * p.score.success_rate);
   out += "  expert" + format("  %18.4f", c.expert.mean_reward) + format("  %17.4f", c.expert.step_reward) +
          format("  %6.1f%%\n", 100.0 * c.expert.success_rate);
   return out;
@@ -159,28 +163,47 @@ Json score_json(const ParkingScore& score) {
 Json student_json(const StudentResult& s, const TaskKit& kit) {
   Json targets = Json::array();
   for (int m : s.diagnosis.targets)
-    targets.push_back({{"skill", m}, {"expertise", s.diagnosis.expertise[static_cast<std::size_t>(m)]},
+    targets.push_back({{"skill", m},
+                       {"expertise", s.diagnosis.expertise[static_cast<std::size_t>(m)]},
                        {"description", kit.describe_skill(m)}});
   Json conditions = Json::array();
   for (const ConditionResult& r : s.conditions)
-    conditions.push_back({{"condition", condition_name(r.condition)}, {"key", condition_key(r.condition)},
-                          {"reward", stats_json(r.reward)}, {"step_reward", stats_json(r.step_reward)},
-                          {"success", stats_json(r.success)}, {"pairs", r.pairs}, {"reverse_pairs", r.reverse_pairs},
-                          {"rehearsal_pairs", r.rehearsal_pairs}, {"finetune_loss", r.finetune_loss},
+    conditions.push_back({{"condition", condition_name(r.condition)},
+                          {"key", condition_key(r.condition)},
+                          {"reward", stats_json(r.reward)},
+                          {"step_reward", stats_json(r.step_reward)},
+                          {"success", stats_json(r.success)},
+                          {"pairs", r.pairs},
+                          {"reverse_pairs", r.reverse_pairs},
+                          {"rehearsal_pairs", r.rehearsal_pairs},
+                          {"finetune_loss", r.finetune_loss},
                           {"heldout_mse_reverse", mean_mse(r.heldout_mse, true)},
                           {"heldout_mse_forward", mean_mse(r.heldout_mse, false)}});
-  return {{"student", student_name(s.recipe.kind)}, {"key", student_key(s.recipe.kind)},
-          {"epochs", s.recipe.epochs}, {"reverse_keep_fraction", s.recipe.reverse_keep_fraction},
-          {"hidden", s.recipe.hidden}, {"training_pairs", s.training_pairs},
-          {"reverse_pairs_total", s.reverse_pairs_total}, {"reverse_pairs_kept", s.reverse_pairs_kept},
-          {"training_loss", s.training_loss}, {"training_mse", s.expert_mse},
-          {"heldout", {{"mse", s.heldout_mse.all}, {"mse_reverse", s.heldout_mse.reverse},
-                       {"mse_forward", s.heldout_mse.forward}, {"driving", score_json(s.heldout)}}},
-          {"diagnosis", {{"mean_score", s.diagnosis_reward}, {"success", s.diagnosis_success},
-                         {"expertise", s.diagnosis.expertise}, {"ranking", s.diagnosis.ranking},
-                         {"targets", std::move(targets)}}},
-          {"before", {{"reward", stats_json(s.before_reward)}, {"step_reward", stats_json(s.before_step_reward)},
-                      {"success", stats_json(s.before_success)}}},
+  return {{"student", student_name(s.recipe.kind)},
+          {"key", student_key(s.recipe.kind)},
+          {"epochs", s.recipe.epochs},
+          {"reverse_keep_fraction", s.recipe.reverse_keep_fraction},
+          {"hidden", s.recipe.hidden},
+          {"training_pairs", s.training_pairs},
+          {"reverse_pairs_total", s.reverse_pairs_total},
+          {"reverse_pairs_kept", s.reverse_pairs_kept},
+          {"training_loss", s.training_loss},
+          {"training_mse", s.expert_mse},
+          {"heldout",
+           {{"mse", s.heldout_mse.all},
+            {"mse_reverse", s.heldout_mse.reverse},
+            {"mse_forward", s.heldout_mse.forward},
+            {"driving", score_json(s.heldout)}}},
+          {"diagnosis",
+           {{"mean_score", s.diagnosis_reward},
+            {"success", s.diagnosis_success},
+            {"expertise", s.diagnosis.expertise},
+            {"ranking", s.diagnosis.ranking},
+            {"targets", std::move(targets)}}},
+          {"before",
+           {{"reward", stats_json(s.before_reward)},
+            {"step_reward", stats_json(s.before_step_reward)},
+            {"success", stats_json(s.before_success)}}},
           {"conditions", std::move(conditions)}};
 }
 
@@ -208,8 +231,12 @@ std::vector<ConditionComparison> compare_conditions(const StudentExperimentResul
     for (const auto& [a, b] : pairs) {
       const ConditionResult& ca = result.students[s].of(a);
       const ConditionResult& cb = result.students[s].of(b);
-      ConditionComparison c{static_cast<int>(s), a, b, mean_difference(ca.reward, cb.reward),
-                            wilcoxon_signed_rank(ca.reward, cb.reward), mean_difference(ca.step_reward, cb.step_reward),
+      ConditionComparison c{static_cast<int>(s),
+                            a,
+                            b,
+                            mean_difference(ca.reward, cb.reward),
+                            wilcoxon_signed_rank(ca.reward, cb.reward),
+                            mean_difference(ca.step_reward, cb.step_reward),
                             wilcoxon_signed_rank(ca.step_reward, cb.step_reward),
                             mean_difference(ca.success, cb.success)};
       out.push_back(c);
@@ -253,19 +280,26 @@ std::string student_experiment_table(const StudentExperimentResult& result, cons
 
 Json student_experiment_json(const StudentExperimentResult& result, const TaskKit& kit) {
   const StudentExperimentConfig& c = result.config;
-  Json doc = {{"seed", c.seed},
-              {"extractor", result.extractor},
-              {"extractor_notice", result.extractor_notice},
-              {"expert_pool", {{"demos", result.pool_size}, {"pairs", result.expert_pairs}, {"mean_score", result.expert_pool_reward}}},
-              {"student_drives", {{"drives", c.student_drives}, {"pairs", result.student_pairs}}},
-              {"heldout_drives", {{"drives", c.heldout_drives}, {"pairs", result.heldout_pairs},
-                                  {"expert", score_json(result.expert_heldout)}}},
-              {"diagnosis_scenarios", result.diagnosis_scenarios},
-              {"config", {{"diagnosis_scenarios", c.diagnosis_scenarios}, {"num_targets", c.num_targets},
-                          {"region", to_string(c.region)}, {"finetune_epochs", c.finetune_epochs},
-                          {"finetune_learning_rate", c.finetune_learning_rate}, {"finetune_pairs", c.finetune_pairs},
-                          {"finetune_rehearsal", c.finetune_rehearsal},
-                          {"evaluation_sets", c.evaluation_sets}, {"scenarios_per_set", c.scenarios_per_set}}}};
+  Json doc = {
+      {"seed", c.seed},
+      {"extractor", result.extractor},
+      {"extractor_notice", result.extractor_notice},
+      {"expert_pool",
+       {{"demos", result.pool_size}, {"pairs", result.expert_pairs}, {"mean_score", result.expert_pool_reward}}},
+      {"student_drives", {{"drives", c.student_drives}, {"pairs", result.student_pairs}}},
+      {"heldout_drives",
+       {{"drives", c.heldout_drives}, {"pairs", result.heldout_pairs}, {"expert", score_json(result.expert_heldout)}}},
+      {"diagnosis_scenarios", result.diagnosis_scenarios},
+      {"config",
+       {{"diagnosis_scenarios", c.diagnosis_scenarios},
+        {"num_targets", c.num_targets},
+        {"region", to_string(c.region)},
+        {"finetune_epochs", c.finetune_epochs},
+        {"finetune_learning_rate", c.finetune_learning_rate},
+        {"finetune_pairs", c.finetune_pairs},
+        {"finetune_rehearsal", c.finetune_rehearsal},
+        {"evaluation_sets", c.evaluation_sets},
+        {"scenarios_per_set", c.scenarios_per_set}}}};
   doc["reference"] = student_json(result.reference, kit);
   Json students = Json::array();
   for (const StudentResult& s : result.students) students.push_back(student_json(s, kit));
@@ -273,21 +307,32 @@ Json student_experiment_json(const StudentExperimentResult& result, const TaskKi
   Json tests = Json::array();
   for (const ConditionComparison& cmp : compare_conditions(result))
     tests.push_back({{"student", student_name(result.students[static_cast<std::size_t>(cmp.student)].recipe.kind)},
-                     {"a", condition_name(cmp.a)}, {"b", condition_name(cmp.b)}, {"mean_difference", cmp.mean_difference},
-                     {"n", cmp.test.n}, {"w_plus", cmp.test.w_plus}, {"w_minus", cmp.test.w_minus},
-                     {"p_two_sided", cmp.test.p_two_sided}, {"exact", cmp.test.exact},
-                     {"step_reward", {{"mean_difference", cmp.step_difference}, {"w_plus", cmp.step_test.w_plus},
-                                      {"w_minus", cmp.step_test.w_minus}, {"p_two_sided", cmp.step_test.p_two_sided}}},
+                     {"a", condition_name(cmp.a)},
+                     {"b", condition_name(cmp.b)},
+                     {"mean_difference", cmp.mean_difference},
+                     {"n", cmp.test.n},
+                     {"w_plus", cmp.test.w_plus},
+                     {"w_minus", cmp.test.w_minus},
+                     {"p_two_sided", cmp.test.p_two_sided},
+                     {"exact", cmp.test.exact},
+                     {"step_reward",
+                      {{"mean_difference", cmp.step_difference},
+                       {"w_plus", cmp.step_test.w_plus},
+                       {"w_minus", cmp.step_test.w_minus},
+                       {"p_two_sided", cmp.step_test.p_two_sided}}},
                      {"success_difference", cmp.success_difference}});
   doc["wilcoxon"] = std::move(tests);
   if (result.curve) {
     Json points = Json::array();
     for (const LearningCurvePoint& p : result.curve->points)
       points.push_back({{"epochs", p.epochs}, {"loss", p.loss}, {"score", score_json(p.score)}});
-    doc["learning_curve"] = {{"student", "reversing difficulty"}, {"rollouts", c.curve.rollouts},
-                             {"drill_pairs", result.curve->drill_pairs}, {"reverse_pairs", result.curve->reverse_pairs},
+    doc["learning_curve"] = {{"student", "reversing difficulty"},
+                             {"rollouts", c.curve.rollouts},
+                             {"drill_pairs", result.curve->drill_pairs},
+                             {"reverse_pairs", result.curve->reverse_pairs},
                              {"rehearsal_pairs", result.curve->rehearsal_pairs},
-                             {"expert", score_json(result.curve->expert)}, {"points", std::move(points)}};
+                             {"expert", score_json(result.curve->expert)},
+                             {"points", std::move(points)}};
   }
   return doc;
 }

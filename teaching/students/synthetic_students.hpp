@@ -40,9 +40,9 @@ struct SyntheticStudent {
   int training_pairs = 0;       // after the reverse filter
   int reverse_pairs_total = 0;  // u0 < 0 pairs in the expert data
   int reverse_pairs_kept = 0;
-  double training_loss = 0.0;   // last epoch's mean MSE
-  double expert_mse = 0.0;      // MSE on all expert pairs (incl. the dropped reverse ones)
-  BcDataset training_data;      // the pairs it was cloned from (rehearsal material when fine-tuning)
+  double training_loss = 0.0;  // last epoch's mean MSE
+  double expert_mse = 0.0;     // MSE on all expert pairs (incl. the dropped reverse ones)
+  BcDataset training_data;     // the pairs it was cloned from (rehearsal material when fine-tuning)
 };
 
 // Deterministic in seed (network initialisation, reverse-pair sample, batch order).

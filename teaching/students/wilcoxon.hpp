@@ -5,11 +5,11 @@
 namespace sc {
 
 struct WilcoxonResult {
-  int n = 0;             // pairs with a non-zero difference (zero differences are dropped, Wilcoxon's method)
-  double w_plus = 0.0;   // sum of ranks of positive differences (a - b > 0)
+  int n = 0;            // pairs with a non-zero difference (zero differences are dropped, Wilcoxon's method)
+  double w_plus = 0.0;  // sum of ranks of positive differences (a - b > 0)
   double w_minus = 0.0;
   double p_two_sided = 1.0;
-  bool exact = false;    // exact null distribution (no ties, n <= 50) or normal approximation
+  bool exact = false;  // exact null distribution (no ties, n <= 50) or normal approximation
 };
 
 // Tests whether the paired differences a[i] - b[i] are symmetric about zero. a and b have equal size.

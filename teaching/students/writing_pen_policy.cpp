@@ -31,13 +31,15 @@ std::vector<float> pen_features(const float* raw_state) {
 BcDataset pen_dataset(const BcDataset& raw) {
   if (raw.size() > 0 && (raw.state_dim != kStateDim || raw.action_dim != kActionDim))
     throw InputError("writing pen data", "expected 13-D states and 2-D steps (classic alphabet), got " +
-                                             std::to_string(raw.state_dim) + "-D and " + std::to_string(raw.action_dim) + "-D");
+                                             std::to_string(raw.state_dim) + "-D and " +
+                                             std::to_string(raw.action_dim) + "-D");
   BcDataset out;
   out.state_dim = kStateDim;
   out.action_dim = kActionDim;
   out.states.resize(raw.states.size());
   for (int i = 0; i < raw.size(); ++i)
-    scale_state(raw.states.data() + static_cast<std::size_t>(i) * kStateDim, out.states.data() + static_cast<std::size_t>(i) * kStateDim);
+    scale_state(raw.states.data() + static_cast<std::size_t>(i) * kStateDim,
+                out.states.data() + static_cast<std::size_t>(i) * kStateDim);
   out.actions.reserve(raw.actions.size());
   for (float a : raw.actions) out.actions.push_back(static_cast<float>(a / kPenActionScale));
   return out;
@@ -45,7 +47,8 @@ BcDataset pen_dataset(const BcDataset& raw) {
 
 std::vector<writing::TracePoint> rollout_pen(const BcPolicy& policy, const writing::WordTrajectory& gold) {
   std::vector<float> state(kStateDim);
-  for (int g = 0; g < writing::kMaxWordSymbols; ++g) state[static_cast<std::size_t>(3 + g)] = static_cast<float>(gold.goal[static_cast<std::size_t>(g)]);
+  for (int g = 0; g < writing::kMaxWordSymbols; ++g)
+    state[static_cast<std::size_t>(3 + g)] = static_cast<float>(gold.goal[static_cast<std::size_t>(g)]);
   writing::TracePoint pen{gold.start.x, gold.start.y, true};
   std::vector<writing::TracePoint> trace{pen};
   trace.reserve(gold.steps.size() + 1);

@@ -18,8 +18,13 @@ namespace sc {
 namespace {
 
 // Independent, reorder-stable seeds for each use (streams of Rng::fork).
-enum SeedStream : std::uint64_t { kStudentInit = 1, kEvaluationSet = 2, kFinetuneData = 3, kFinetuneTraining = 4,
-                                  kRehearsal = 5 };
+enum SeedStream : std::uint64_t {
+  kStudentInit = 1,
+  kEvaluationSet = 2,
+  kFinetuneData = 3,
+  kFinetuneTraining = 4,
+  kRehearsal = 5
+};
 
 std::uint64_t derived_seed(std::uint64_t seed, SeedStream stream, std::uint64_t a = 0, std::uint64_t b = 0) {
   return Rng(seed).fork(stream).fork(a).fork(b).next_u64();
@@ -57,7 +62,8 @@ std::vector<writing::WordTrajectory> evaluation_words(const WritingKit& kit, int
     names.push_back(scenario.word);
     out.push_back(writing::gold_trajectory(scenario));
   }
-  if (static_cast<int>(out.size()) < count) throw InputError("writing students", "the alphabet has too few fresh words");
+  if (static_cast<int>(out.size()) < count)
+    throw InputError("writing students", "the alphabet has too few fresh words");
   return out;
 }
 
@@ -105,8 +111,8 @@ void finetune_set(const WritingStudentExperimentConfig& config, const WritingStu
     out.finetune_loss.push_back(copy.train(training_pairs, training));
     out.reward.push_back(score_pen_student(copy, *set.words));
     out.pairs.push_back(data.pairs.size());
-    out.letter_pairs.push_back(student.recipe.deficit == PenDeficit::HalfTrained
-                                   ? 0 : letter_pairs_of(data, symbols, student.recipe.letter));
+    out.letter_pairs.push_back(
+        student.recipe.deficit == PenDeficit::HalfTrained ? 0 : letter_pairs_of(data, symbols, student.recipe.letter));
     out.rehearsal_pairs.push_back(rehearsal.size());
   }
 }
@@ -145,9 +151,11 @@ void WritingStudentExperimentConfig::validate() const {
   in_range(evaluation_sets, 1, 1000, "evaluation_sets");
   in_range(words_per_set, 1, 30, "words_per_set");
   if (!(finetune_learning_rate > 0.0 && finetune_learning_rate <= 1.0))
-    throw InputError("writing students", "finetune_learning_rate must lie in (0, 1], got " + std::to_string(finetune_learning_rate));
+    throw InputError("writing students",
+                     "finetune_learning_rate must lie in (0, 1], got " + std::to_string(finetune_learning_rate));
   if (!(finetune_rehearsal >= 0.0 && finetune_rehearsal <= 100.0))
-    throw InputError("writing students", "finetune_rehearsal must lie in [0, 100], got " + std::to_string(finetune_rehearsal));
+    throw InputError("writing students",
+                     "finetune_rehearsal must lie in [0, 100], got " + std::to_string(finetune_rehearsal));
   for (const WritingStudentRecipe& r : students) {
     in_range(r.epochs, 1, 100000, "student epochs");
     in_range(r.hidden, 1, 4096, "student hidden width");

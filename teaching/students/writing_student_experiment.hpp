@@ -28,8 +28,8 @@ struct WritingStudentExperimentConfig {
   int num_targets = 3;
   int finetune_epochs = 10;
   double finetune_learning_rate = 5e-4;  // the paper's BC learning rate
-  int finetune_pairs = 0;      // per condition; 0 = one round of Ind. Drills of each set
-  double finetune_rehearsal = 0.0;  // as StudentExperimentConfig: round(R x pairs) of the student's own pairs
+  int finetune_pairs = 0;                // per condition; 0 = one round of Ind. Drills of each set
+  double finetune_rehearsal = 0.0;       // as StudentExperimentConfig: round(R x pairs) of the student's own pairs
   int evaluation_sets = 15;
   int words_per_set = 2;
 
@@ -41,11 +41,11 @@ struct WritingStudentExperimentConfig {
 
 struct WritingConditionResult {
   StudyCondition condition = StudyCondition::IndDrills;
-  std::vector<double> reward;        // per evaluation set: mean overlap reward
-  std::vector<int> pairs;            // per set: fine-tuning pairs (equal across conditions)
-  std::vector<int> letter_pairs;     // per set: of which in the student's letter (true character bounds)
-  std::vector<double> finetune_loss; // per set: last epoch's training MSE
-  std::vector<int> rehearsal_pairs;  // per set
+  std::vector<double> reward;         // per evaluation set: mean overlap reward
+  std::vector<int> pairs;             // per set: fine-tuning pairs (equal across conditions)
+  std::vector<int> letter_pairs;      // per set: of which in the student's letter (true character bounds)
+  std::vector<double> finetune_loss;  // per set: last epoch's training MSE
+  std::vector<int> rehearsal_pairs;   // per set
 };
 
 struct WritingStudentResult {
@@ -56,7 +56,7 @@ struct WritingStudentResult {
   double expert_mse = 0.0;
   double diagnosis_reward = 0.0;  // mean reward of its diagnosis traces
   ExpertiseEstimate diagnosis;
-  std::vector<double> before_reward;  // per evaluation set
+  std::vector<double> before_reward;               // per evaluation set
   std::vector<WritingConditionResult> conditions;  // kFinetuneConditions order
   const WritingConditionResult& of(StudyCondition condition) const;
 };
@@ -67,7 +67,7 @@ struct WritingStudentExperimentResult {
   std::string extractor_notice;
   int pool_size = 0;
   int expert_pairs = 0;
-  std::vector<int> diagnosis_words;  // pool indices picked by Alg. 1
+  std::vector<int> diagnosis_words;                        // pool indices picked by Alg. 1
   std::vector<std::vector<std::string>> evaluation_words;  // per set
   std::vector<WritingStudentResult> students;
 };

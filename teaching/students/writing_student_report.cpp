@@ -105,7 +105,8 @@ std::string writing_experiment_table(const WritingStudentExperimentResult& resul
   config_lines(out, result);
   out += "\nstudent          condition        overlap reward          pairs  letter\n";
   for (const WritingStudentResult& s : result.students) student_rows(out, s);
-  out.append("\nweakest skills (Alg. 2 on the student's traces of ").append(std::to_string(result.diagnosis_words.size()));
+  out.append("\nweakest skills (Alg. 2 on the student's traces of ")
+      .append(std::to_string(result.diagnosis_words.size()));
   out.append(" diverse pool words):\n");
   for (const WritingStudentResult& s : result.students) diagnosis_line(out, s, kit);
   out += "\nWilcoxon signed-rank tests on the per-set mean reward (two-sided, paired by set):\n";
@@ -128,30 +129,56 @@ Json writing_experiment_json(const WritingStudentExperimentResult& result, const
   for (const WritingStudentResult& s : result.students) {
     Json conditions = Json::object();
     for (const WritingConditionResult& cr : s.conditions)
-      conditions[std::string(condition_name(cr.condition))] = {
-          {"reward", stats_json(cr.reward)}, {"pairs", cr.pairs}, {"letter_pairs", cr.letter_pairs},
-          {"finetune_loss", cr.finetune_loss}, {"rehearsal_pairs", cr.rehearsal_pairs}};
+      conditions[std::string(condition_name(cr.condition))] = {{"reward", stats_json(cr.reward)},
+                                                               {"pairs", cr.pairs},
+                                                               {"letter_pairs", cr.letter_pairs},
+                                                               {"finetune_loss", cr.finetune_loss},
+                                                               {"rehearsal_pairs", cr.rehearsal_pairs}};
     Json targets = Json::array();
     for (int m : s.diagnosis.targets)
-      targets.push_back({{"skill", m}, {"description", kit.describe_skill(m)}, {"expertise", s.diagnosis.expertise[static_cast<std::size_t>(m)]}});
-    students.push_back({{"student", s.recipe.key()}, {"name", s.recipe.name()}, {"epochs", s.recipe.epochs},
-                        {"hidden", s.recipe.hidden}, {"learning_rate", s.recipe.learning_rate},
-                        {"training_pairs", s.training_pairs}, {"letter_pairs", s.letter_pairs},
-                        {"training_loss", s.training_loss}, {"expert_mse", s.expert_mse},
-                        {"diagnosis_reward", s.diagnosis_reward}, {"weakest_skills", targets},
-                        {"before", stats_json(s.before_reward)}, {"conditions", conditions}});
+      targets.push_back({{"skill", m},
+                         {"description", kit.describe_skill(m)},
+                         {"expertise", s.diagnosis.expertise[static_cast<std::size_t>(m)]}});
+    students.push_back({{"student", s.recipe.key()},
+                        {"name", s.recipe.name()},
+                        {"epochs", s.recipe.epochs},
+                        {"hidden", s.recipe.hidden},
+                        {"learning_rate", s.recipe.learning_rate},
+                        {"training_pairs", s.training_pairs},
+                        {"letter_pairs", s.letter_pairs},
+                        {"training_loss", s.training_loss},
+                        {"expert_mse", s.expert_mse},
+                        {"diagnosis_reward", s.diagnosis_reward},
+                        {"weakest_skills", targets},
+                        {"before", stats_json(s.before_reward)},
+                        {"conditions", conditions}});
   }
   Json tests = Json::array();
   for (const WritingComparison& t : compare_writing_conditions(result))
-    tests.push_back({{"student", result.students[static_cast<std::size_t>(t.student)].recipe.key()}, {"a", t.a}, {"b", t.b},
-                     {"mean_difference", t.mean_difference}, {"n", t.test.n}, {"w_plus", t.test.w_plus},
-                     {"w_minus", t.test.w_minus}, {"p_two_sided", t.test.p_two_sided}, {"exact", t.test.exact}});
-  return {{"task", "writing"}, {"seed", c.seed}, {"extractor", result.extractor}, {"extractor_notice", result.extractor_notice},
-          {"pool_words", result.pool_size}, {"expert_pairs", result.expert_pairs},
-          {"diagnosis_words", result.diagnosis_words}, {"evaluation_words", result.evaluation_words},
-          {"num_targets", c.num_targets}, {"finetune_epochs", c.finetune_epochs},
-          {"finetune_learning_rate", c.finetune_learning_rate}, {"finetune_pairs", c.finetune_pairs},
-          {"finetune_rehearsal", c.finetune_rehearsal}, {"students", students}, {"tests", tests}};
+    tests.push_back({{"student", result.students[static_cast<std::size_t>(t.student)].recipe.key()},
+                     {"a", t.a},
+                     {"b", t.b},
+                     {"mean_difference", t.mean_difference},
+                     {"n", t.test.n},
+                     {"w_plus", t.test.w_plus},
+                     {"w_minus", t.test.w_minus},
+                     {"p_two_sided", t.test.p_two_sided},
+                     {"exact", t.test.exact}});
+  return {{"task", "writing"},
+          {"seed", c.seed},
+          {"extractor", result.extractor},
+          {"extractor_notice", result.extractor_notice},
+          {"pool_words", result.pool_size},
+          {"expert_pairs", result.expert_pairs},
+          {"diagnosis_words", result.diagnosis_words},
+          {"evaluation_words", result.evaluation_words},
+          {"num_targets", c.num_targets},
+          {"finetune_epochs", c.finetune_epochs},
+          {"finetune_learning_rate", c.finetune_learning_rate},
+          {"finetune_pairs", c.finetune_pairs},
+          {"finetune_rehearsal", c.finetune_rehearsal},
+          {"students", students},
+          {"tests", tests}};
 }
 
 }  // namespace sc

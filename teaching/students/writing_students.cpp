@@ -20,18 +20,24 @@ void check_letter(char letter) {
 
 std::string WritingStudentRecipe::name() const {
   switch (deficit) {
-    case PenDeficit::MissingLetter: return std::string("missing '") + letter + "'";
-    case PenDeficit::DistortedLetter: return std::string("distorted '") + letter + "'";
-    case PenDeficit::HalfTrained: break;
+    case PenDeficit::MissingLetter:
+      return std::string("missing '") + letter + "'";
+    case PenDeficit::DistortedLetter:
+      return std::string("distorted '") + letter + "'";
+    case PenDeficit::HalfTrained:
+      break;
   }
   return "half-trained";
 }
 
 std::string WritingStudentRecipe::key() const {
   switch (deficit) {
-    case PenDeficit::MissingLetter: return std::string("missing-") + letter;
-    case PenDeficit::DistortedLetter: return std::string("distorted-") + letter;
-    case PenDeficit::HalfTrained: break;
+    case PenDeficit::MissingLetter:
+      return std::string("missing-") + letter;
+    case PenDeficit::DistortedLetter:
+      return std::string("distorted-") + letter;
+    case PenDeficit::HalfTrained:
+      break;
   }
   return "half-trained";
 }
@@ -66,7 +72,9 @@ LabelledPenPairs labelled_pen_pairs(const std::vector<writing::WordTrajectory>& 
     one.actions = data.actions;
     out.pairs.append(one);
     for (int t = 0, k = 0; t < data.length(); ++t) {
-      while (k + 1 < static_cast<int>(w.character_starts.size()) && w.character_starts[static_cast<std::size_t>(k + 1)] <= t) ++k;
+      while (k + 1 < static_cast<int>(w.character_starts.size()) &&
+             w.character_starts[static_cast<std::size_t>(k + 1)] <= t)
+        ++k;
       out.symbol.push_back(w.word[static_cast<std::size_t>(k)]);
     }
   }
@@ -94,8 +102,12 @@ BcDataset deficit_pairs(const LabelledPenPairs& expert, const WritingStudentReci
 WritingStudent train_writing_student(const WritingStudentRecipe& recipe, const LabelledPenPairs& expert,
                                      std::uint64_t seed) {
   const BcDataset expert_units = pen_dataset(expert.pairs);
-  WritingStudent s{recipe, BcPolicy(expert_units.state_dim, expert_units.action_dim, recipe.hidden, seed),
-                   pen_dataset(deficit_pairs(expert, recipe)), 0, 0.0, 0.0};
+  WritingStudent s{recipe,
+                   BcPolicy(expert_units.state_dim, expert_units.action_dim, recipe.hidden, seed),
+                   pen_dataset(deficit_pairs(expert, recipe)),
+                   0,
+                   0.0,
+                   0.0};
   if (recipe.deficit != PenDeficit::HalfTrained)
     s.letter_pairs = static_cast<int>(std::count(expert.symbol.begin(), expert.symbol.end(), recipe.letter));
   BcTrainingConfig config;

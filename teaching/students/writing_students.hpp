@@ -45,10 +45,10 @@ BcDataset deficit_pairs(const LabelledPenPairs& expert, const WritingStudentReci
 struct WritingStudent {
   WritingStudentRecipe recipe;
   BcPolicy policy;
-  BcDataset training_data;    // network units (rehearsal material when fine-tuning)
-  int letter_pairs = 0;       // expert pairs of the recipe's letter (left out or mirrored)
-  double training_loss = 0.0; // last epoch's mean MSE (network units)
-  double expert_mse = 0.0;    // MSE on all expert pairs, undistorted (network units)
+  BcDataset training_data;     // network units (rehearsal material when fine-tuning)
+  int letter_pairs = 0;        // expert pairs of the recipe's letter (left out or mirrored)
+  double training_loss = 0.0;  // last epoch's mean MSE (network units)
+  double expert_mse = 0.0;     // MSE on all expert pairs, undistorted (network units)
 };
 
 // Deterministic in seed (initialisation and batch order).

@@ -48,8 +48,8 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
       if (pool[k].trial == expert) d.pool_index = static_cast<int>(k);
     const StepSequence expert_steps =
         d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].steps : kit.steps_of(expert);
-    d.expert = d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].skills
-                                 : kit.extractor().extract(expert_steps);
+    d.expert =
+        d.pool_index >= 0 ? pool[static_cast<std::size_t>(d.pool_index)].skills : kit.extractor().extract(expert_steps);
     const StepSequence learner_steps = kit.steps_of(trial);
     d.student = kit.extractor().extract(learner_steps);
     d.reward = kit.reward_of(trial);
@@ -76,7 +76,8 @@ Json segmentation_json(const Segmentation& segmentation) {
 }
 
 Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
-  Json out = {{"task", kit.task()}, {"extractor", kit.extractor().name()}, {"extractor_notice", kit.extractor_notice()}};
+  Json out = {
+      {"task", kit.task()}, {"extractor", kit.extractor().name()}, {"extractor_notice", kit.extractor_notice()}};
   Json trials = Json::array();
   for (const DiagnosedTrial& t : diagnosis.trials)
     trials.push_back({{"scenario", t.scenario},

@@ -12,8 +12,8 @@ ParkingDrillProjector::ParkingDrillProjector(std::vector<ParkingTrial> experts) 
   expert_steps_.reserve(experts_.size());
   for (std::size_t i = 0; i < experts_.size(); ++i) {
     if (experts_[i].states.size() != experts_[i].actions.size() + 1 || experts_[i].control_hz != parking::kControlHz)
-      throw InputError("parking drill projector", "expert " + std::to_string(i) +
-                                                      " needs control-rate actions and T+1 recorded states");
+      throw InputError("parking drill projector",
+                       "expert " + std::to_string(i) + " needs control-rate actions and T+1 recorded states");
     expert_steps_.push_back(parking_step_sequence(experts_[i]));
   }
 }

@@ -30,7 +30,8 @@ std::vector<TracePoint3> parking_trace_points(const StepSequence& steps) {
   for (int t = 0; t < steps.length(); ++t) {
     const std::size_t o = static_cast<std::size_t>(t) * kParkingStateDim;
     ParkingObservation obs{};
-    for (int k = 0; k < kParkingStateDim; ++k) obs[static_cast<std::size_t>(k)] = steps.states[o + static_cast<std::size_t>(k)];
+    for (int k = 0; k < kParkingStateDim; ++k)
+      obs[static_cast<std::size_t>(k)] = steps.states[o + static_cast<std::size_t>(k)];
     const VehicleState v = vehicle_from_observation(obs);
     out.push_back({v.x, v.y, v.speed});
   }

@@ -29,7 +29,10 @@ std::vector<ParkingTrial> generate_parking_pool(const ParkingPoolOptions& option
 }
 
 Json parking_pool_json(const ParkingPoolOptions& options, const std::vector<ParkingTrial>& trials) {
-  Json doc = {{"format", kFormat}, {"version", kVersion}, {"seed", options.seed}, {"count", trials.size()},
+  Json doc = {{"format", kFormat},
+              {"version", kVersion},
+              {"seed", options.seed},
+              {"count", trials.size()},
               {"region", std::string(to_string(options.region))}};
   Json list = Json::array();
   for (const auto& t : trials) list.push_back(parking_trial_to_json(t));

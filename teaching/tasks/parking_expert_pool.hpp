@@ -21,8 +21,8 @@
 namespace sc {
 
 struct ParkingPoolOptions {
-  int count = 100;          // the reference's CompILE data set had 100 rollouts
-  std::uint64_t seed = 0;   // scenario i is parking_pool_scenario(seed, i, region)
+  int count = 100;         // the reference's CompILE data set had 100 rollouts
+  std::uint64_t seed = 0;  // scenario i is parking_pool_scenario(seed, i, region)
   GoalRegion region = GoalRegion::WholeLot;
 };
 

@@ -134,10 +134,12 @@ double ParkingKit::drill_attempt_reward(const PlayableDrill& drill, const Json& 
   return reward_of(attempt);
 }
 
-std::vector<TracePoint3> ParkingKit::trace_points(const StepSequence& steps) const { return parking_trace_points(steps); }
+std::vector<TracePoint3> ParkingKit::trace_points(const StepSequence& steps) const {
+  return parking_trace_points(steps);
+}
 
 double ParkingKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
-                                 int begin, int end) const {
+                                    int begin, int end) const {
   return parking_execution_reward(expert, learner, path, begin, end);
 }
 

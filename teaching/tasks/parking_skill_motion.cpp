@@ -17,8 +17,7 @@ constexpr double kSharpSteer = 0.5;     // |u1| above this is more than half loc
 }  // namespace
 
 std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequence>& experts,
-                                                      const std::vector<Segmentation>& segmentations,
-                                                      int num_skills) {
+                                                      const std::vector<Segmentation>& segmentations, int num_skills) {
   std::vector<ParkingSkillMotion> out(static_cast<std::size_t>(std::max(num_skills, 0)));
   for (std::size_t e = 0; e < experts.size() && e < segmentations.size(); ++e) {
     const StepSequence& x = experts[e];
@@ -39,7 +38,8 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
         m.sharp_fraction += std::abs(u1) > kSharpSteer ? 1.0 : 0.0;
         m.mean_abs_steering += std::abs(u1);
         m.mean_progress += t / length;
-        m.braking_fraction += std::abs(speed) >= kMovingSpeed && u0 * speed < 0.0 && std::abs(u0) >= kBraking ? 1.0 : 0.0;
+        m.braking_fraction +=
+            std::abs(speed) >= kMovingSpeed && u0 * speed < 0.0 && std::abs(u0) >= kBraking ? 1.0 : 0.0;
         ++m.steps;
       }
     }
@@ -99,13 +99,18 @@ struct Attribute {
 
 const std::vector<Attribute>& attributes() {
   static const std::vector<Attribute> list = {
-      {[](const ParkingSkillMotion& m) { return std::abs(m.mean_speed); }, 8.0,
-       {{"slowly", "quickly"}, {"slowly", "at medium speed", "quickly"}, {"very slowly", "slowly", "quickly", "very quickly"}}},
-      {[](const ParkingSkillMotion& m) { return m.mean_abs_steering; }, 1.0,
+      {[](const ParkingSkillMotion& m) { return std::abs(m.mean_speed); },
+       8.0,
+       {{"slowly", "quickly"},
+        {"slowly", "at medium speed", "quickly"},
+        {"very slowly", "slowly", "quickly", "very quickly"}}},
+      {[](const ParkingSkillMotion& m) { return m.mean_abs_steering; },
+       1.0,
        {{"with a gentle turn", "with a sharp turn"},
         {"with a gentle turn", "with a medium turn", "with a sharp turn"},
         {"with a very gentle turn", "with a gentle turn", "with a sharp turn", "with a very sharp turn"}}},
-      {[](const ParkingSkillMotion& m) { return m.mean_progress; }, 1.0,
+      {[](const ParkingSkillMotion& m) { return m.mean_progress; },
+       1.0,
        {{"early in the manoeuvre", "late in the manoeuvre"},
         {"at the start of the manoeuvre", "midway through the manoeuvre", "at the end of the manoeuvre"},
         {"at the very start of the manoeuvre", "early in the manoeuvre", "late in the manoeuvre",
@@ -116,7 +121,8 @@ const std::vector<Attribute>& attributes() {
 
 // The smallest gap between the group's sorted values, over the attribute's scale.
 double separation(const Attribute& a, const std::vector<ParkingSkillMotion>& motions, std::vector<std::size_t> group) {
-  std::sort(group.begin(), group.end(), [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
+  std::sort(group.begin(), group.end(),
+            [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
   double gap = 1e300;
   for (std::size_t k = 1; k < group.size(); ++k)
     gap = std::min(gap, (a.value(motions[group[k]]) - a.value(motions[group[k - 1]])) / a.scale);
@@ -125,13 +131,15 @@ double separation(const Attribute& a, const std::vector<ParkingSkillMotion>& mot
 
 // Appends to words[i] of each skill in `group` (2..4 skills) the graded words of the attribute that sets
 // them apart most.
-void grade(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions, std::vector<std::size_t> group) {
+void grade(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions,
+           std::vector<std::size_t> group) {
   const auto& list = attributes();
   std::size_t best = 0;
   for (std::size_t a = 1; a < list.size(); ++a)
     if (separation(list[a], motions, group) > separation(list[best], motions, group)) best = a;
   const Attribute& a = list[best];
-  std::stable_sort(group.begin(), group.end(), [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
+  std::stable_sort(group.begin(), group.end(),
+                   [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
   for (std::size_t k = 0; k < group.size(); ++k) words[group[k]] += ", " + a.words[group.size() - 2][k];
 }
 

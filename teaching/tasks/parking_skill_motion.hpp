@@ -10,21 +10,20 @@
 namespace sc {
 
 struct ParkingSkillMotion {
-  int steps = 0;                  // expert control steps carrying the skill (0: never used)
-  double mean_speed = 0.0;        // m/s along the heading, < 0 when reversing
-  double mean_acceleration = 0.0; // u0 in [-1, 1]
-  double mean_steering = 0.0;     // u1 in [-1, 1], > 0 = right
-  double reverse_fraction = 0.0;  // share of the steps whose speed is negative
-  double sharp_fraction = 0.0;    // share of the steps steering more than half lock (|u1| > 0.5)
-  double braking_fraction = 0.0;  // share of the steps braking: |u0| >= 0.15 against the motion while moving
-  double mean_abs_steering = 0.0; // |u1|: how sharply the skill turns
-  double mean_progress = 0.0;     // step / drive length in [0, 1): which part of the manoeuvre it belongs to
+  int steps = 0;                   // expert control steps carrying the skill (0: never used)
+  double mean_speed = 0.0;         // m/s along the heading, < 0 when reversing
+  double mean_acceleration = 0.0;  // u0 in [-1, 1]
+  double mean_steering = 0.0;      // u1 in [-1, 1], > 0 = right
+  double reverse_fraction = 0.0;   // share of the steps whose speed is negative
+  double sharp_fraction = 0.0;     // share of the steps steering more than half lock (|u1| > 0.5)
+  double braking_fraction = 0.0;   // share of the steps braking: |u0| >= 0.15 against the motion while moving
+  double mean_abs_steering = 0.0;  // |u1|: how sharply the skill turns
+  double mean_progress = 0.0;      // step / drive length in [0, 1): which part of the manoeuvre it belongs to
 };
 
 // Step-weighted means over every segment of each skill id in [0, num_skills).
 std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequence>& experts,
-                                                      const std::vector<Segmentation>& segmentations,
-                                                      int num_skills);
+                                                      const std::vector<Segmentation>& segmentations, int num_skills);
 
 // What the words say (the rules describe_parking_motion uses): the skill reverses ("reversing", "starting to
 // reverse": mean speed <= -0.5 m/s, or nearly stopped with mean u0 < 0) / brakes (mean u0 against the

@@ -69,8 +69,13 @@ ParkingPurityReport parking_skill_purity(const std::vector<Segmentation>& segmen
   int total = 0;
   for (const auto& [skill, c] : counts) {
     const double n = c.steps;
-    ParkingSkillPurity p{skill, c.steps, c.reversing / n, (c.steps - c.reversing) / n,
-                         c.left / n, c.right / n, (c.steps - c.left - c.right) / n};
+    ParkingSkillPurity p{skill,
+                         c.steps,
+                         c.reversing / n,
+                         (c.steps - c.reversing) / n,
+                         c.left / n,
+                         c.right / n,
+                         (c.steps - c.left - c.right) / n};
     out.direction_purity += p.direction_purity() * n;
     out.turn_purity += p.turn_purity() * n;
     total += c.steps;
@@ -134,8 +139,11 @@ Json to_json(const WritingSymbolReport& r) {
   for (const WritingSkillSymbols& s : r.skills) {
     Json symbols = Json::object();
     for (const auto& [symbol, n] : s.symbol_steps) symbols[std::string(1, symbol)] = n;
-    per_skill.push_back({{"skill", s.skill}, {"steps", s.steps}, {"majority", std::string(1, s.majority())},
-                         {"purity", s.purity()}, {"symbol_steps", std::move(symbols)}});
+    per_skill.push_back({{"skill", s.skill},
+                         {"steps", s.steps},
+                         {"majority", std::string(1, s.majority())},
+                         {"purity", s.purity()},
+                         {"symbol_steps", std::move(symbols)}});
   }
   Json symbol_skill = Json::object();
   for (const auto& [symbol, skill] : r.symbol_skill) symbol_skill[std::string(1, symbol)] = skill;
@@ -143,17 +151,26 @@ Json to_json(const WritingSymbolReport& r) {
 }
 
 Json to_json(const BoundaryScore& s) {
-  return Json{{"precision", s.precision()}, {"recall", s.recall()}, {"f1", s.f1()},
-              {"true_positives", s.true_positives}, {"false_positives", s.false_positives},
+  return Json{{"precision", s.precision()},
+              {"recall", s.recall()},
+              {"f1", s.f1()},
+              {"true_positives", s.true_positives},
+              {"false_positives", s.false_positives},
               {"false_negatives", s.false_negatives}};
 }
 
 Json to_json(const ParkingPurityReport& r) {
   Json per_skill = Json::array();
   for (const ParkingSkillPurity& p : r.skills)
-    per_skill.push_back({{"skill", p.skill}, {"steps", p.steps}, {"reversing", p.reversing}, {"forward", p.forward},
-                         {"left", p.left}, {"right", p.right}, {"straight", p.straight}});
-  return Json{{"direction_purity", r.direction_purity}, {"turn_purity", r.turn_purity}, {"per_skill", std::move(per_skill)}};
+    per_skill.push_back({{"skill", p.skill},
+                         {"steps", p.steps},
+                         {"reversing", p.reversing},
+                         {"forward", p.forward},
+                         {"left", p.left},
+                         {"right", p.right},
+                         {"straight", p.straight}});
+  return Json{
+      {"direction_purity", r.direction_purity}, {"turn_purity", r.turn_purity}, {"per_skill", std::move(per_skill)}};
 }
 
 Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentation>& segmentations) {
@@ -166,14 +183,18 @@ Json skill_quality_report(const SkillDataSet& data, const std::vector<Segmentati
     steps += d.steps.length();
     boundaries_known = boundaries_known || !d.true_boundaries.empty();
   }
-  Json out{{"task", data.task}, {"data", data.description}, {"trajectories", data.demos.size()}, {"steps", steps},
+  Json out{{"task", data.task},
+           {"data", data.description},
+           {"trajectories", data.demos.size()},
+           {"steps", steps},
            {"usage", to_json(skill_usage(segmentations))}};
   if (boundaries_known) {
     out["boundaries"] = to_json(writing_boundary_score(segmentations, data.demos));
     out["boundaries"]["tolerance"] = "+-5% of the word's length in steps";
     out["symbols"] = to_json(writing_symbol_purity(segmentations, data.demos));
   }
-  if (task_kind_of(data.task) == TaskKind::parking) out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
+  if (task_kind_of(data.task) == TaskKind::parking)
+    out["purity"] = to_json(parking_skill_purity(segmentations, data.steps()));
   return out;
 }
 

@@ -36,7 +36,7 @@ struct ParkingSkillPurity {
   double reversing = 0.0, forward = 0.0;           // shares of the skill's steps, sum to 1
   double left = 0.0, right = 0.0, straight = 0.0;  // shares, sum to 1
   double direction_purity() const { return reversing > forward ? reversing : forward; }
-  double turn_purity() const;                       // the largest of left, right, straight
+  double turn_purity() const;  // the largest of left, right, straight
 };
 
 struct ParkingPurityReport {
@@ -62,8 +62,8 @@ struct WritingSkillSymbols {
 };
 struct WritingSymbolReport {
   std::vector<WritingSkillSymbols> skills;  // skills with at least one step, by id
-  double purity = 0.0;                       // step-weighted mean of the skills' purity
-  std::map<char, int> symbol_skill;          // each symbol -> the skill drawing most of its steps
+  double purity = 0.0;                      // step-weighted mean of the skills' purity
+  std::map<char, int> symbol_skill;         // each symbol -> the skill drawing most of its steps
 };
 // Demos without true boundaries, or whose label does not have one character per symbol, are skipped.
 WritingSymbolReport writing_symbol_purity(const std::vector<Segmentation>& segmentations,

@@ -49,7 +49,8 @@ SkillDataSet generate_parking_demos(int count, std::uint64_t seed) {
 SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   if (count < 1) throw InputError("writing demonstrations", "count must be at least 1");
   const std::vector<std::string> words = writing::classic_words(count, seed);
-  const writing::GlyphSet glyphs = writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
+  const writing::GlyphSet glyphs =
+      writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
   SkillDataSet out{"writing", "", {}, {}};
   for (int i = 0; i < count; ++i) {
     const writing::WordTrajectory gold = writing::build_word_trajectory(glyphs, words[static_cast<std::size_t>(i)]);
@@ -59,13 +60,15 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
                                 data.character_starts.end());
     out.demos.push_back({gold.word, writing_step_sequence(data), std::move(boundaries)});
   }
-  out.description = std::to_string(count) + " gold trajectories of classic words from the reference's generator (seed " +
-                    std::to_string(seed) + ")";
+  out.description = std::to_string(count) +
+                    " gold trajectories of classic words from the reference's generator (seed " + std::to_string(seed) +
+                    ")";
   return out;
 }
 
 SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed) {
-  if (count < 1 || copies < 0) throw InputError("writing demonstrations", "count must be at least 1, copies at least 0");
+  if (count < 1 || copies < 0)
+    throw InputError("writing demonstrations", "count must be at least 1, copies at least 0");
   const std::vector<std::string> words = writing::classic_words(count, seed);
   const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
   std::vector<int> drawers_pool = training_drawers();
@@ -79,7 +82,8 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
     std::vector<int> drawers;
     for (std::size_t k = 0; k < word.size(); ++k) drawers.push_back(drawers_pool[rng.below(drawers_pool.size())]);
     clean.push_back(written_word(glyphs, word, drawers));
-    clean_steps.push_back(writing_step_sequence(writing::trace_step_data(clean.back().points, writing::AlphabetKind::Classic, word)));
+    clean_steps.push_back(
+        writing_step_sequence(writing::trace_step_data(clean.back().points, writing::AlphabetKind::Classic, word)));
   }
   RepeatBoundaryConfig repeat;
   repeat.max_boundaries = CompileConfig::writing_defaults().num_segments - 1;
@@ -93,15 +97,17 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
       Rng rng = root.fork(static_cast<std::uint64_t>(i)).fork(1u + static_cast<std::uint64_t>(c));
       const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
       const WrittenWord copy = perturbed(clean[u], {wobble, affine}, rng);
-      out.demos.push_back({words[u] + " (copy " + std::to_string(c + 1) + ")",
-                           writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
-                           copy.interior_boundaries()});
+      out.demos.push_back(
+          {words[u] + " (copy " + std::to_string(c + 1) + ")",
+           writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
+           copy.interior_boundaries()});
       out.warm_boundaries.push_back(warm[u]);
     }
   }
-  out.description = std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
-                    "), letters by the paper's and Omniglot drawers 1-10, plus " + std::to_string(copies) +
-                    " perturbed copies each (wobble <= 12 px, affine <= 0.12) with the clean words' repetition boundaries";
+  out.description =
+      std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
+      "), letters by the paper's and Omniglot drawers 1-10, plus " + std::to_string(copies) +
+      " perturbed copies each (wobble <= 12 px, affine <= 0.12) with the clean words' repetition boundaries";
   return out;
 }
 
@@ -148,8 +154,10 @@ DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint
   Rng rng = Rng(seed).fork(0x5b117u);
   for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
   std::size_t held = static_cast<std::size_t>(std::lround(valid_fraction * static_cast<double>(n)));
-  if (n >= 2) held = std::clamp<std::size_t>(held, 1, n - 1);
-  else held = 0;
+  if (n >= 2)
+    held = std::clamp<std::size_t>(held, 1, n - 1);
+  else
+    held = 0;
   DataSplit out;
   for (std::size_t i = 0; i < n; ++i) {
     const SkillDemo& demo = data.demos[order[i]];

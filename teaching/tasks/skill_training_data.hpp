@@ -13,7 +13,7 @@
 namespace sc {
 
 struct SkillDemo {
-  std::string label;                 // word, scenario index or file name: for messages and reports
+  std::string label;  // word, scenario index or file name: for messages and reports
   StepSequence steps;
   std::vector<int> true_boundaries;  // interior boundaries (action indices) when known (writing words)
 };

@@ -37,13 +37,13 @@ ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::pat
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {
   ChosenExtractor chosen = choose_skill_extractor(task, model);
   if (task == TaskKind::parking)
-    return std::make_unique<ParkingKit>(chosen.extractor, chosen.notice,
-                                        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}});
+    return std::make_unique<ParkingKit>(
+        chosen.extractor, chosen.notice,
+        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}});
   return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
 }
 
-std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model,
-                                       GoalRegion region) {
+std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model, GoalRegion region) {
   return make_task_kit(parse_task_kind(task, "task"), model, region);
 }
 

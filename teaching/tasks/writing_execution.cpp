@@ -43,7 +43,8 @@ double writing_execution_reward(const StepSequence& expert, const StepSequence& 
                                 int begin, int end) {
   const std::vector<TracePoint3> e = writing_trace_points(expert), l = writing_trace_points(learner);
   std::vector<TracePoint3> expert_part, learner_part;
-  for (int t = std::max(begin, 0); t < end && t < static_cast<int>(e.size()); ++t) expert_part.push_back(e[static_cast<std::size_t>(t)]);
+  for (int t = std::max(begin, 0); t < end && t < static_cast<int>(e.size()); ++t)
+    expert_part.push_back(e[static_cast<std::size_t>(t)]);
   int last = -1;
   for (const auto& [i, j] : path) {
     if (i < begin || i >= end || j >= static_cast<int>(l.size()) || j == last) continue;

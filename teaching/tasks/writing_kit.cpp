@@ -154,10 +154,12 @@ double WritingKit::drill_attempt_reward(const PlayableDrill& drill, const Json& 
   return overlap_reward(WritingDrillProjector::drill_trace(drill), trial.points);
 }
 
-std::vector<TracePoint3> WritingKit::trace_points(const StepSequence& steps) const { return writing_trace_points(steps); }
+std::vector<TracePoint3> WritingKit::trace_points(const StepSequence& steps) const {
+  return writing_trace_points(steps);
+}
 
 double WritingKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
-                                 int begin, int end) const {
+                                    int begin, int end) const {
   return writing_execution_reward(expert, learner, path, begin, end);
 }
 

@@ -22,7 +22,7 @@ inline constexpr int kWritingTimeSlices = 8;  // the paper's study: K = 8 for wr
 struct WritingKitOptions {
   std::filesystem::path data_dir;  // Omniglot stroke files; empty = writing::omniglot_data_dir()
   writing::AlphabetKind alphabet = writing::AlphabetKind::Classic;
-  int pool_words = 30;             // distinct words (the classic generator has 60 in all)
+  int pool_words = 30;  // distinct words (the classic generator has 60 in all)
   std::uint64_t seed = 0;
 };
 

@@ -16,9 +16,9 @@ constexpr LetterFault kFaults[] = {LetterFault::Distorted, LetterFault::OtherDra
 
 // The learner's way of getting its letter wrong, the same in every word it writes.
 struct FaultShape {
-  int drawer = 0;                       // OtherDrawer
-  double scale_y = 1.0, shear = 0.0;    // Distorted
-  double wobble_px = 0.0;               // the background hand
+  int drawer = 0;                     // OtherDrawer
+  double scale_y = 1.0, shear = 0.0;  // Distorted
+  double wobble_px = 0.0;             // the background hand
 };
 
 FaultShape fault_shape(const PlantedLearner& learner) {
@@ -36,7 +36,8 @@ FaultShape fault_shape(const PlantedLearner& learner) {
 }
 
 std::pair<std::size_t, std::size_t> symbol_range(const WrittenWord& w, std::size_t k) {
-  const std::size_t end = k + 1 < w.symbol_starts.size() ? static_cast<std::size_t>(w.symbol_starts[k + 1]) : w.points.size() - 1;
+  const std::size_t end =
+      k + 1 < w.symbol_starts.size() ? static_cast<std::size_t>(w.symbol_starts[k + 1]) : w.points.size() - 1;
   return {static_cast<std::size_t>(w.symbol_starts[k]), end};
 }
 
@@ -83,10 +84,14 @@ ExpertiseEstimate diagnose(const WritingKit& kit, const ClassicDrawerGlyphs& gly
 
 std::string to_string(LetterFault fault) {
   switch (fault) {
-    case LetterFault::None: return "none";
-    case LetterFault::Distorted: return "distorted";
-    case LetterFault::OtherDrawer: return "other drawer";
-    case LetterFault::StraightLine: return "straight line";
+    case LetterFault::None:
+      return "none";
+    case LetterFault::Distorted:
+      return "distorted";
+    case LetterFault::OtherDrawer:
+      return "other drawer";
+    case LetterFault::StraightLine:
+      return "straight line";
   }
   return "?";
 }
@@ -124,7 +129,8 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
   for (char letter : kLetters) {
     PlantedLetterRow row{letter, letter_skill(kit, letter), 0, 0, std::vector<int>(3, 0), std::vector<int>(3, 0)};
     for (int i = 0; i < learners_per_letter; ++i) {
-      const PlantedLearner learner{letter, kFaults[i % 3], root.fork(1000u * static_cast<unsigned char>(letter) + i).next_u64()};
+      const PlantedLearner learner{letter, kFaults[i % 3],
+                                   root.fork(1000u * static_cast<unsigned char>(letter) + i).next_u64()};
       const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, learner);
       const bool hit = !e.targets.empty() && e.targets.front() == row.skill;
       ++row.learners;
@@ -135,7 +141,8 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
     report.letters.push_back(row);
   }
   for (int i = 0; i < learners_per_letter; ++i) {
-    const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()});
+    const ExpertiseEstimate e =
+        diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()});
     double lowest = 0.0;
     for (int m : e.targets) lowest = std::min(lowest, e.expertise[static_cast<std::size_t>(m)]);
     ++report.noise_learners;
@@ -149,12 +156,15 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
 std::string planted_weakness_table(const PlantedWeaknessReport& report) {
   std::string out = "pre-test words:";
   for (const std::string& w : report.pretest_words) out += " " + w;
-  out += "\n\n| letter | its skill | top target is its skill | distorted | other drawer | straight line |\n|---|---|---|---|---|---|\n";
+  out +=
+      "\n\n| letter | its skill | top target is its skill | distorted | other drawer | straight line "
+      "|\n|---|---|---|---|---|---|\n";
   char line[512];
   for (const PlantedLetterRow& r : report.letters) {
-    std::snprintf(line, sizeof line, "| %c | %d | %d of %d (%.0f %%) | %d / %d | %d / %d | %d / %d |\n", r.letter, r.skill,
-                  r.top_target, r.learners, r.learners ? 100.0 * r.top_target / r.learners : 0.0, r.by_fault_top[0],
-                  r.by_fault_learners[0], r.by_fault_top[1], r.by_fault_learners[1], r.by_fault_top[2], r.by_fault_learners[2]);
+    std::snprintf(line, sizeof line, "| %c | %d | %d of %d (%.0f %%) | %d / %d | %d / %d | %d / %d |\n", r.letter,
+                  r.skill, r.top_target, r.learners, r.learners ? 100.0 * r.top_target / r.learners : 0.0,
+                  r.by_fault_top[0], r.by_fault_learners[0], r.by_fault_top[1], r.by_fault_learners[1],
+                  r.by_fault_top[2], r.by_fault_learners[2]);
     out += line;
   }
   std::vector<double> lowest = report.noise_lowest_expertise;

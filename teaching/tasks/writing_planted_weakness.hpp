@@ -26,7 +26,7 @@ enum class LetterFault { None, Distorted, OtherDrawer, StraightLine };
 std::string to_string(LetterFault fault);
 
 struct PlantedLearner {
-  char letter = 0;                     // 0 with LetterFault::None
+  char letter = 0;  // 0 with LetterFault::None
   LetterFault fault = LetterFault::None;
   std::uint64_t seed = 0;
 };
@@ -42,7 +42,7 @@ inline constexpr double kConfidentTargetExpertise = -0.15;
 
 struct PlantedLetterRow {
   char letter = 0;
-  int skill = -1;                      // the skill with the most expert steps in the letter
+  int skill = -1;  // the skill with the most expert steps in the letter
   int learners = 0;
   int top_target = 0;                  // learners whose first target is `skill`
   std::vector<int> by_fault_learners;  // per fault (Distorted, OtherDrawer, StraightLine)
@@ -53,7 +53,7 @@ struct PlantedWeaknessReport {
   std::vector<std::string> pretest_words;
   std::vector<PlantedLetterRow> letters;
   int noise_learners = 0;
-  int noise_without_confident_target = 0;  // no target with expertise < kConfidentTargetExpertise
+  int noise_without_confident_target = 0;      // no target with expertise < kConfidentTargetExpertise
   std::vector<double> noise_lowest_expertise;  // per noise-only learner: its weakest target's E
   std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
 };

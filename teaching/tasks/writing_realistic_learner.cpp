@@ -18,7 +18,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 writing::StrokeDrawing joined_strokes(const writing::StrokeDrawing& drawing) {
   writing::StrokeDrawing out;
   out.strokes.emplace_back();
-  for (const writing::Stroke& s : drawing.strokes) out.strokes.front().insert(out.strokes.front().end(), s.begin(), s.end());
+  for (const writing::Stroke& s : drawing.strokes)
+    out.strokes.front().insert(out.strokes.front().end(), s.begin(), s.end());
   return out;
 }
 
@@ -37,7 +38,8 @@ std::vector<writing::TracePoint> chained(const std::vector<writing::WritingStep>
 
 std::vector<double> arc_lengths(const std::vector<writing::TracePoint>& pts) {
   std::vector<double> s(pts.size(), 0.0);
-  for (std::size_t i = 1; i < pts.size(); ++i) s[i] = s[i - 1] + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    s[i] = s[i - 1] + std::hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
   return s;
 }
 
@@ -93,7 +95,8 @@ ClassicDrawerGlyphs ClassicDrawerGlyphs::load(const std::filesystem::path& data_
     const int character = writing::character_number(writing::AlphabetKind::Classic, symbol);
     for (int d = 1; d <= writing::kDrawersPerCharacter; ++d) {
       const std::string name = writing::stroke_file_name(character, d);
-      out.glyphs_[{symbol, d}] = writing::classic_glyph(symbol, joined_strokes(writing::read_stroke_file(data_dir / name)), name);
+      out.glyphs_[{symbol, d}] =
+          writing::classic_glyph(symbol, joined_strokes(writing::read_stroke_file(data_dir / name)), name);
     }
   }
   for (char symbol : std::string_view("-^")) out.glyphs_[{symbol, 0}] = writing::connector_glyph(symbol);
@@ -103,7 +106,8 @@ ClassicDrawerGlyphs ClassicDrawerGlyphs::load(const std::filesystem::path& data_
 const writing::Glyph& ClassicDrawerGlyphs::glyph(char symbol, int drawer) const {
   const auto it = glyphs_.find({symbol, writing::is_connector(symbol) ? 0 : drawer});
   if (it == glyphs_.end())
-    throw InputError("realistic learner", std::string("no glyph for '") + symbol + "' by drawer " + std::to_string(drawer));
+    throw InputError("realistic learner",
+                     std::string("no glyph for '") + symbol + "' by drawer " + std::to_string(drawer));
   return it->second;
 }
 
@@ -137,7 +141,8 @@ WrittenWord perturbed(const WrittenWord& word, const HandNoise& noise, Rng& rng)
     const double sx = 1.0 + rng.uniform(-a, a), sy = 1.0 + rng.uniform(-a, a), shear = rng.uniform(-a, a);
     const double rot = rng.uniform(-a / 2, a / 2), c = std::cos(rot), s = std::sin(rot);
     const std::size_t begin = static_cast<std::size_t>(word.symbol_starts[k]);
-    const std::size_t end = k + 1 < word.symbol_starts.size() ? static_cast<std::size_t>(word.symbol_starts[k + 1]) : n - 1;
+    const std::size_t end =
+        k + 1 < word.symbol_starts.size() ? static_cast<std::size_t>(word.symbol_starts[k + 1]) : n - 1;
     for (std::size_t i = begin; i < end; ++i) {
       const double dx = word.points[i + 1].x - word.points[i].x, dy = word.points[i + 1].y - word.points[i].y;
       const double ux = sx * dx + shear * dy, uy = sy * dy;  // scale and shear, then rotate
@@ -164,7 +169,8 @@ class MouseRecorder {
       : dt_(1.0 / mouse.events_hz), scale_(screen_scale), starts_(symbols, -1) {}
 
   void read(const writing::TracePoint& p, int jitter_x = 0, int jitter_y = 0) {
-    const writing::TracePoint q{(std::round(p.x * scale_) + jitter_x) / scale_, (std::round(p.y * scale_) + jitter_y) / scale_, p.pen};
+    const writing::TracePoint q{(std::round(p.x * scale_) + jitter_x) / scale_,
+                                (std::round(p.y * scale_) + jitter_y) / scale_, p.pen};
     if (out_.trace.points.empty() || q.x != out_.trace.points.back().x || q.y != out_.trace.points.back().y) {
       out_.trace.points.push_back(q);
       out_.trace.times.push_back(t_);
@@ -210,8 +216,10 @@ SampledTrace mouse_sampled(const WrittenWord& word, const MouseSampling& mouse, 
     starts_at[k] = s[static_cast<std::size_t>(word.symbol_starts[k])];
     const double end = k + 1 < symbols ? s[static_cast<std::size_t>(word.symbol_starts[k + 1])] : total;
     const double chance = rng.uniform();
-    if (chance < mouse.hesitations_per_letter) pause_at[k] = starts_at[k];
-    else if (chance < mouse.hesitations_per_letter * 1.1) pause_at[k] = rng.uniform(starts_at[k], end);
+    if (chance < mouse.hesitations_per_letter)
+      pause_at[k] = starts_at[k];
+    else if (chance < mouse.hesitations_per_letter * 1.1)
+      pause_at[k] = rng.uniform(starts_at[k], end);
   }
   double at = 0.0;
   std::size_t next_symbol = 0, next_pause = 0;
@@ -241,7 +249,8 @@ SampledTrace realistic_trace(const ClassicDrawerGlyphs& glyphs, std::string_view
   Rng pick = root.fork(1), shape = root.fork(2), mouse = root.fork(3);
   std::vector<int> drawers;
   if (!hand.drawer_pool.empty())
-    for (std::size_t k = 0; k < word.size(); ++k) drawers.push_back(hand.drawer_pool[pick.below(hand.drawer_pool.size())]);
+    for (std::size_t k = 0; k < word.size(); ++k)
+      drawers.push_back(hand.drawer_pool[pick.below(hand.drawer_pool.size())]);
   const WrittenWord shaped = perturbed(written_word(glyphs, word, drawers), hand.noise, shape);
   return hand.mouse ? mouse_sampled(shaped, hand.sampling, mouse) : unsampled(shaped);
 }
@@ -249,7 +258,8 @@ SampledTrace realistic_trace(const ClassicDrawerGlyphs& glyphs, std::string_view
 std::vector<int> infilled_symbol_starts(const writing::TimedTrace& trace, const std::vector<int>& symbol_starts) {
   std::vector<int> index(trace.points.size(), 0);
   for (std::size_t i = 0; i + 1 < trace.points.size(); ++i) {
-    const std::vector<writing::Point2> pair{{trace.points[i].x, trace.points[i].y}, {trace.points[i + 1].x, trace.points[i + 1].y}};
+    const std::vector<writing::Point2> pair{{trace.points[i].x, trace.points[i].y},
+                                            {trace.points[i + 1].x, trace.points[i + 1].y}};
     index[i + 1] = index[i] + static_cast<int>(writing::infill_reference(pair).size()) - 1;
   }
   std::vector<int> out;

@@ -61,7 +61,8 @@ struct WrittenWord {
 
 // `drawers[k]` draws the k-th symbol (0 = the paper's drawer); empty = the paper's drawer throughout.
 // Throws InputError for a word that is not classic or a drawers list of another length.
-WrittenWord written_word(const ClassicDrawerGlyphs& glyphs, std::string_view word, const std::vector<int>& drawers = {});
+WrittenWord written_word(const ClassicDrawerGlyphs& glyphs, std::string_view word,
+                         const std::vector<int>& drawers = {});
 
 // Shape noise: keeps the number of points and their indices, so boundaries (and any labels per step) carry over.
 struct HandNoise {
@@ -71,10 +72,10 @@ struct HandNoise {
 WrittenWord perturbed(const WrittenWord& word, const HandNoise& noise, Rng& rng);
 
 struct MouseSampling {
-  double events_hz = 125.0;                          // mouse reports per second
-  double speed_min = 150.0, speed_max = 450.0;       // mean pen speed of the learner, canvas px/s
+  double events_hz = 125.0;                               // mouse reports per second
+  double speed_min = 150.0, speed_max = 450.0;            // mean pen speed of the learner, canvas px/s
   double screen_scale_min = 1.2, screen_scale_max = 2.4;  // screen px per canvas px
-  double hesitations_per_letter = 0.3;               // chance of a pause at a letter start (a tenth of it mid-letter)
+  double hesitations_per_letter = 0.3;  // chance of a pause at a letter start (a tenth of it mid-letter)
   double hesitation_seconds_max = 0.6;
 };
 

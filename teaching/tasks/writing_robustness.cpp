@@ -78,10 +78,12 @@ std::vector<WritingRobustnessRow> measure_writing_robustness(const SkillExtracto
     std::vector<SkillDemo> demos;
     std::vector<std::vector<int>> starts;
     for (std::size_t i = 0; i < words.size(); ++i) {
-      const SampledTrace trace =
-          condition.hand ? realistic_trace(glyphs, words[i], *condition.hand, root.fork(i).next_u64()) : unsampled(golds[i]);
+      const SampledTrace trace = condition.hand
+                                     ? realistic_trace(glyphs, words[i], *condition.hand, root.fork(i).next_u64())
+                                     : unsampled(golds[i]);
       starts.push_back(infilled_symbol_starts(trace.trace, trace.symbol_starts));
-      demos.push_back({words[i], trace_steps(trace.trace, words[i]), std::vector<int>(starts.back().begin() + 1, starts.back().end())});
+      demos.push_back({words[i], trace_steps(trace.trace, words[i]),
+                       std::vector<int>(starts.back().begin() + 1, starts.back().end())});
     }
     std::vector<StepSequence> steps;
     for (const SkillDemo& d : demos) steps.push_back(d.steps);
@@ -90,7 +92,8 @@ std::vector<WritingRobustnessRow> measure_writing_robustness(const SkillExtracto
     for (std::size_t i = 0; i < words.size(); ++i) {
       for (std::size_t k = 0; k < words[i].size(); ++k) {
         if (writing::is_connector(words[i][k])) continue;
-        const int want = majority_skill(expert[i], golds[i].symbol_starts[k], range_end(golds[i].symbol_starts, k, gold_steps[i].length()));
+        const int want = majority_skill(expert[i], golds[i].symbol_starts[k],
+                                        range_end(golds[i].symbol_starts, k, gold_steps[i].length()));
         const int got = majority_skill(learner[i], starts[i][k], range_end(starts[i], k, steps[i].length()));
         ++row.letters;
         row.agreeing += want == got;
@@ -106,7 +109,8 @@ std::string robustness_table(const std::vector<WritingRobustnessRow>& rows) {
   char line[512];
   for (const WritingRobustnessRow& r : rows) {
     std::snprintf(line, sizeof line, "| %s | %.3f (%.3f / %.3f) | %.3f (%d of %d letters) |\n", r.condition.c_str(),
-                  r.boundaries.f1(), r.boundaries.precision(), r.boundaries.recall(), r.agreement(), r.agreeing, r.letters);
+                  r.boundaries.f1(), r.boundaries.precision(), r.boundaries.recall(), r.agreement(), r.agreeing,
+                  r.letters);
     out += line;
   }
   return out;

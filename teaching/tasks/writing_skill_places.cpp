@@ -16,7 +16,7 @@ std::string part_words(char symbol, CharacterPart part) {
   return kParts[static_cast<int>(part)] + std::string(1, symbol) + "'";
 }
 
-constexpr double kWholePartShare = 0.2;  // each third holds at least this share of the symbol's steps
+constexpr double kWholePartShare = 0.2;   // each third holds at least this share of the symbol's steps
 constexpr double kWholeSkillShare = 0.8;  // the whole symbols named cover at least this share of the skill
 
 // The symbol's steps in this skill, and whether they spread over all three thirds of it (a connector
@@ -36,9 +36,8 @@ bool covers_whole(const WritingSkillPlace& place, char symbol) {
 std::string whole_symbols_words(const WritingSkillPlace& place) {
   std::vector<std::pair<int, char>> ranked;
   for (const auto& [symbol, n] : place.character_steps) ranked.push_back({n, symbol});
-  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
+  std::sort(ranked.begin(), ranked.end(),
+            [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
   std::vector<char> letters, connectors;
   int covered = 0;
   for (const auto& [n, symbol] : ranked) {
@@ -51,7 +50,8 @@ std::string whole_symbols_words(const WritingSkillPlace& place) {
   auto list = [](const std::vector<char>& symbols, const std::string& one, const std::string& many) {
     if (symbols.empty()) return std::string();
     std::string text = "the " + (symbols.size() == 1 ? one : many) + " '" + symbols[0] + "'";
-    for (std::size_t i = 1; i < symbols.size(); ++i) text += (i + 1 == symbols.size() ? " and '" : ", '") + std::string(1, symbols[i]) + "'";
+    for (std::size_t i = 1; i < symbols.size(); ++i)
+      text += (i + 1 == symbols.size() ? " and '" : ", '") + std::string(1, symbols[i]) + "'";
     return text;
   };
   const std::string a = list(letters, "letter", "letters"), b = list(connectors, "connector", "connectors");
@@ -71,8 +71,7 @@ double WritingSkillPlace::share_of(char symbol) const {
 }
 
 std::vector<WritingSkillPlace> writing_skill_places(const std::vector<WordCharacters>& words,
-                                                    const std::vector<Segmentation>& segmentations,
-                                                    int num_skills) {
+                                                    const std::vector<Segmentation>& segmentations, int num_skills) {
   std::vector<WritingSkillPlace> out(static_cast<std::size_t>(std::max(num_skills, 0)));
   for (std::size_t w = 0; w < words.size() && w < segmentations.size(); ++w) {
     const WordCharacters& word = words[w];
@@ -88,7 +87,8 @@ std::vector<WritingSkillPlace> writing_skill_places(const std::vector<WordCharac
                             ? word.character_starts[static_cast<std::size_t>(k + 1)]
                             : word.length;
         // Connectors are short pen moves between characters: one place, no thirds.
-        const int third = writing::is_connector(symbol) ? 0 : std::clamp(3 * (t - begin) / std::max(end - begin, 1), 0, 2);
+        const int third =
+            writing::is_connector(symbol) ? 0 : std::clamp(3 * (t - begin) / std::max(end - begin, 1), 0, 2);
         ++place.steps;
         ++place.character_steps[symbol];
         ++place.part_steps[{symbol, static_cast<CharacterPart>(third)}];

@@ -23,16 +23,15 @@ struct WordCharacters {
 };
 
 struct WritingSkillPlace {
-  int steps = 0;                                      // expert pen steps carrying the skill
-  std::map<char, int> character_steps;                // per symbol
+  int steps = 0;                                             // expert pen steps carrying the skill
+  std::map<char, int> character_steps;                       // per symbol
   std::map<std::pair<char, CharacterPart>, int> part_steps;  // per symbol and third of it
   // The share of the skill's steps inside `symbol` (0 when the skill is unused).
   double share_of(char symbol) const;
 };
 
 std::vector<WritingSkillPlace> writing_skill_places(const std::vector<WordCharacters>& words,
-                                                    const std::vector<Segmentation>& segmentations,
-                                                    int num_skills);
+                                                    const std::vector<Segmentation>& segmentations, int num_skills);
 
 // The most used (symbol, part), plus the second when the first covers under 60 % of the skill's steps.
 // Connectors are named as such ("the connector '-'").

@@ -15,8 +15,7 @@ StepSequence writing_step_sequence(const writing::WritingStepData& data) {
 
 StepSequence writing_step_sequence(const writing::WritingTrial& trial) {
   const writing::TimedTrace infilled = writing::infill_trace(trial.trace());
-  return writing_step_sequence(
-      writing::trace_step_data(infilled.points, trial.scenario.alphabet, trial.scenario.word));
+  return writing_step_sequence(writing::trace_step_data(infilled.points, trial.scenario.alphabet, trial.scenario.word));
 }
 
 }  // namespace sc

@@ -36,8 +36,8 @@ TEST(BenchCommand, QuickRunOfOneBenchmarkWritesTheReport) {
   ASSERT_EQ(run("bench --quick --filter records/insert_trial_30kB_sync_normal --out " + out.string(), log), 0)
       << read(log);
   const std::string md = read(out);
-  EXPECT_THAT(md, HasSubstr("skillcoach bench --quick --filter 'records/insert_trial_30kB_sync_normal' --out " +
-                            out.string()));
+  EXPECT_THAT(
+      md, HasSubstr("skillcoach bench --quick --filter 'records/insert_trial_30kB_sync_normal' --out " + out.string()));
   EXPECT_THAT(md, HasSubstr("| Logical CPUs |"));
   EXPECT_THAT(md, HasSubstr("| records/insert_trial_30kB_sync_normal/real_time | "));  // UseRealTime() suffix
   EXPECT_THAT(md, HasSubstr(" ms | 3 × "));  // three repetitions in --quick mode

@@ -16,7 +16,8 @@ Json json_of(const std::string& output) {
 }
 
 TEST(EvaluateSkillsCommand, WritingReportsBoundaryScoresUsageAndReconstructionOnHeldOutWords) {
-  const auto r = run_skillcoach("evaluate-skills --task writing --count 10 --model " + test::tiny_model("writing").string());
+  const auto r =
+      run_skillcoach("evaluate-skills --task writing --count 10 --model " + test::tiny_model("writing").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json d = json_of(r.output);
   EXPECT_EQ(d.at("seed"), 4);  // the model's seed (3) + 1: not its training data
@@ -33,11 +34,12 @@ TEST(EvaluateSkillsCommand, WritingReportsBoundaryScoresUsageAndReconstructionOn
 }
 
 TEST(EvaluateSkillsCommand, DetailsListEveryWordWithItsTrueBoundariesAndContiguousSegments) {
-  const auto plain = run_skillcoach("evaluate-skills --task writing --count 3 --model " + test::tiny_model("writing").string());
+  const auto plain =
+      run_skillcoach("evaluate-skills --task writing --count 3 --model " + test::tiny_model("writing").string());
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_FALSE(json_of(plain.output).contains("demos"));
-  const auto r =
-      run_skillcoach("evaluate-skills --task writing --count 3 --details --model " + test::tiny_model("writing").string());
+  const auto r = run_skillcoach("evaluate-skills --task writing --count 3 --details --model " +
+                                test::tiny_model("writing").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json demos = json_of(r.output).at("demos");
   ASSERT_EQ(demos.size(), 3u);
@@ -56,7 +58,8 @@ TEST(EvaluateSkillsCommand, DetailsListEveryWordWithItsTrueBoundariesAndContiguo
 }
 
 TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
-  const auto r = run_skillcoach("evaluate-skills --task parking --count 4 --model " + test::tiny_model("parking").string());
+  const auto r =
+      run_skillcoach("evaluate-skills --task parking --count 4 --model " + test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json d = json_of(r.output);
   ASSERT_FALSE(d.at("purity").at("per_skill").empty());
@@ -68,8 +71,8 @@ TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
 }
 
 TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition) {
-  const auto r =
-      run_skillcoach("evaluate-skills --task parking --count 3 --realistic-drivers --model " + test::tiny_model("parking").string());
+  const auto r = run_skillcoach("evaluate-skills --task parking --count 3 --realistic-drivers --model " +
+                                test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json rows = json_of(r.output).at("realistic_drivers");
   ASSERT_EQ(rows.size(), 8u);
@@ -86,7 +89,8 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
 }
 
 TEST(EvaluateSkillsCommand, RefusesTheTrainingSeedAndAModelOfAnotherTask) {
-  const auto same = run_skillcoach("evaluate-skills --task writing --seed 3 --model " + test::tiny_model("writing").string());
+  const auto same =
+      run_skillcoach("evaluate-skills --task writing --seed 3 --model " + test::tiny_model("writing").string());
   EXPECT_EQ(same.exit_code, 2) << same.output;
   EXPECT_NE(same.output.find("seed the model was trained with"), std::string::npos) << same.output;
   const auto other = run_skillcoach("evaluate-skills --task parking --model " + test::tiny_model("writing").string());

@@ -38,7 +38,7 @@ TEST(SimulateStudentsCommand, QuickRunPrintsTheTableAndWritesJsonAndChart) {
     ASSERT_EQ(s.at("conditions").size(), 3u);
     const Json& pairs = s.at("conditions")[0].at("pairs");
     for (const Json& c : s.at("conditions")) EXPECT_EQ(c.at("pairs"), pairs);  // equal-size data per set
-    EXPECT_EQ(s.at("conditions")[0].at("reward").at("per_set").size(), 4u);   // --quick: 4 sets
+    EXPECT_EQ(s.at("conditions")[0].at("reward").at("per_set").size(), 4u);    // --quick: 4 sets
   }
   EXPECT_EQ(doc.at("wilcoxon").size(), 6u);
 
@@ -60,14 +60,15 @@ TEST(SimulateStudentsCommand, QuickRunPrintsTheTableAndWritesJsonAndChart) {
 TEST(SimulateStudentsCommand, StudyCornerIsRecordedAndBadSettingsAreOneLineErrors) {
   const std::filesystem::path dir = test::scratch_path("simulate-students", "corner");
   std::filesystem::remove_all(dir);
-  const auto r = test::run_skillcoach("simulate-students --quick --study-corner --no-curve --out-dir '" + dir.string() + "'");
+  const auto r =
+      test::run_skillcoach("simulate-students --quick --study-corner --no-curve --out-dir '" + dir.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json doc = read_json_file(dir / "students.json");
   EXPECT_EQ(doc.at("config").at("region"), "study-corner");
   EXPECT_FALSE(doc.contains("learning_curve"));
   EXPECT_FALSE(std::filesystem::exists(dir / "students_curve.png"));
-  for (const char* bad : {"--finetune-lr 0", "--finetune-epochs 0", "--student-drives -3", "--rehearsal 101",
-                          "--reverse-keep 1.5"}) {
+  for (const char* bad :
+       {"--finetune-lr 0", "--finetune-epochs 0", "--student-drives -3", "--rehearsal 101", "--reverse-keep 1.5"}) {
     const auto e = test::run_skillcoach(std::string("simulate-students --quick ") + bad + " --out-dir /tmp/none");
     EXPECT_EQ(e.exit_code, 2) << bad << "\n" << e.output;
   }

@@ -17,10 +17,11 @@ TEST(SimulateWritingStudentsCommand, QuickRunPrintsTheTableAndWritesJsonAndChart
   ASSERT_TRUE(std::filesystem::exists(test::skillcoach_binary())) << test::skillcoach_binary() << " is not built";
   const std::filesystem::path dir = test::scratch_path("simulate-students", "writing-quick");
   std::filesystem::remove_all(dir);
-  const auto r = test::run_skillcoach("simulate-students --task writing --quick --seed 2 --out-dir '" + dir.string() + "'");
+  const auto r =
+      test::run_skillcoach("simulate-students --task writing --quick --seed 2 --out-dir '" + dir.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  for (const char* text : {"Synthetic writing students", "missing 'a'", "half-trained", "Ind. Drills", "Full Trajectory",
-                           "Wilcoxon signed-rank", "p = "})
+  for (const char* text : {"Synthetic writing students", "missing 'a'", "half-trained", "Ind. Drills",
+                           "Full Trajectory", "Wilcoxon signed-rank", "p = "})
     EXPECT_NE(r.output.find(text), std::string::npos) << text << "\n" << r.output;
   const Json doc = read_json_file(dir / "writing_students.json");
   EXPECT_EQ(doc.at("task"), "writing");

@@ -22,7 +22,8 @@ TEST(TrainSkillsCommand, SameSeedGivesTheSameModelBytesAndAnotherSeedDoesNot) {
 
 TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
   const auto model = scratch_path("train_skills", "sidecar.pt");
-  const auto r = run_skillcoach("train-skills --task parking --demos 5 --iterations 2 --seed 7 --out " + model.string());
+  const auto r =
+      run_skillcoach("train-skills --task parking --demos 5 --iterations 2 --seed 7 --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json s = read_json_file(model.string() + ".json");
   EXPECT_EQ(s.at("task"), "parking");
@@ -37,7 +38,8 @@ TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
 
 TEST(TrainSkillsCommand, ProgressIsPlainLinesWhenStderrIsNotATerminal) {
   const auto model = scratch_path("train_skills", "progress.pt");
-  const auto r = run_skillcoach("train-skills --task writing --demos 6 --iterations 3 --seed 1 --out " + model.string());
+  const auto r =
+      run_skillcoach("train-skills --task writing --demos 6 --iterations 3 --seed 1 --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find('\r'), std::string::npos);
   EXPECT_NE(r.output.find("it 1/3  loss"), std::string::npos) << r.output;
@@ -52,7 +54,8 @@ TEST(TrainSkillsCommand, TrainsOnAFolderOfTrialFiles) {
     std::filesystem::copy_file(test::wavy_writing_trial("wavy.json"), dir / ("trial" + std::to_string(i) + ".json"),
                                std::filesystem::copy_options::overwrite_existing);
   const auto model = scratch_path("train_skills", "from_data.pt");
-  const auto r = run_skillcoach("train-skills --task writing --data " + dir.string() + " --iterations 1 --out " + model.string());
+  const auto r =
+      run_skillcoach("train-skills --task writing --data " + dir.string() + " --iterations 1 --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(read_json_file(model.string() + ".json").at("data").get<std::string>().find("3 writing trial files"),
             std::string::npos);
@@ -85,8 +88,8 @@ TEST(TrainSkillsCommand, ParkingTrialInAWritingFolderIsRefused) {
 
 TEST(TrainSkillsCommand, FixedBoundariesMarkTheModelAsADiagnostic) {
   const auto model = scratch_path("train_skills", "fixed.pt");
-  const auto r = run_skillcoach("train-skills --task writing --demos 6 --iterations 2 --fix-boundaries --out " +
-                                model.string());
+  const auto r =
+      run_skillcoach("train-skills --task writing --demos 6 --iterations 2 --fix-boundaries --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json s = read_json_file(model.string() + ".json");
   EXPECT_EQ(s.at("metrics").at("fixed_boundaries"), true);

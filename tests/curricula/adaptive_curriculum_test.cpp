@@ -17,10 +17,9 @@ CurriculumInputs inputs() {
   for (int i = 0; i < 8; ++i) in.expert_skills.push_back(seq({{3, 6}, {4, 6}}));
   for (int i = 0; i < 4; ++i) in.expert_skills.push_back(seq({{4, 5}, {5, 4}, {3, 2}}));
   // Pre-test on experts 0, 8, 16: the learner skips skill 0 (a planted weakness), does the rest.
-  std::vector<ExpertiseTrial> pretest = {
-      {0, in.expert_skills[0], seq({{1, 6}, {2, 6}}), -0.6},
-      {8, in.expert_skills[8], in.expert_skills[8], -0.1},
-      {16, in.expert_skills[16], in.expert_skills[16], -0.1}};
+  std::vector<ExpertiseTrial> pretest = {{0, in.expert_skills[0], seq({{1, 6}, {2, 6}}), -0.6},
+                                         {8, in.expert_skills[8], in.expert_skills[8], -0.1},
+                                         {16, in.expert_skills[16], in.expert_skills[16], -0.1}};
   in.pretest = estimate_expertise(pretest, 6, 7);
   in.seed = 77;
   return in;
@@ -69,7 +68,8 @@ TEST(AdaptiveCurriculum, RetargetsTowardsAWeaknessPlantedInPractice) {
   // Once the learner performs everything, nothing is penalised any more.
   rounds.push_back(r1);
   std::vector<ExpertiseTrial> perfect;
-  for (std::size_t i = 0; i < r1.practice.items.size(); ++i) perfect.push_back(attempt(r1.practice.items[i], -1, static_cast<int>(i)));
+  for (std::size_t i = 0; i < r1.practice.items.size(); ++i)
+    perfect.push_back(attempt(r1.practice.items[i], -1, static_cast<int>(i)));
   const AdaptiveRound r2 = next_round(rounds, perfect, in, config);
   for (int m : r2.diagnosis.ranking) EXPECT_FALSE(r2.diagnosis.penalised(m)) << m;
 }

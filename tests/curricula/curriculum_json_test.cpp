@@ -31,8 +31,10 @@ TEST(CurriculumJson, RoundTripsEveryCondition) {
 }
 
 TEST(CurriculumJson, BadFieldsNameThePath) {
-  Json doc = {{"condition", "ind-drills"}, {"budget_steps", 10},
-              {"items", Json::array({{{"kind", "lecture"}, {"target_skills", {1}}, {"sessions", 1}, {"material", {}}}})}};
+  Json doc = {
+      {"condition", "ind-drills"},
+      {"budget_steps", 10},
+      {"items", Json::array({{{"kind", "lecture"}, {"target_skills", {1}}, {"sessions", 1}, {"material", {}}}})}};
   try {
     curriculum_from_json(JsonView(doc, "c.json"));
     FAIL() << "no error";

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
 #include <map>
 #include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -152,8 +152,8 @@ TEST(Curriculum, ExplicitBudgetsAreFilled) {
   CurriculumConfig config = CurriculumConfig::writing();
   config.budget_steps = 400;
   const CurriculumInputs in = inputs_for(pool, 4);
-  for (StudyCondition c : {StudyCondition::FullTrajectory, StudyCondition::Skills, StudyCondition::Drills,
-                           StudyCondition::IndDrills}) {
+  for (StudyCondition c :
+       {StudyCondition::FullTrajectory, StudyCondition::Skills, StudyCondition::Drills, StudyCondition::IndDrills}) {
     const Curriculum cur = make_curriculum(c, in, config);
     const int drill_max = config.drills.repetitions * config.drills.ngram_length * pool.longest_segment;
     EXPECT_NEAR(cur.total_steps(), 400, 0.5 * std::max(drill_max, pool.longest_trajectory)) << condition_name(c);
@@ -212,7 +212,8 @@ TEST(Curriculum, IndividualizedDrillsTargetThePretestWeakness) {
   const Curriculum c = make_curriculum(StudyCondition::IndDrills, in, CurriculumConfig::parking());
   ASSERT_FALSE(c.items.empty());
   EXPECT_EQ(c.items[0].target_skills, (std::vector<int>{7}));
-  EXPECT_NE(std::find(c.items[0].material.ngram.begin(), c.items[0].material.ngram.end(), 7), c.items[0].material.ngram.end());
+  EXPECT_NE(std::find(c.items[0].material.ngram.begin(), c.items[0].material.ngram.end(), 7),
+            c.items[0].material.ngram.end());
   for (const auto& item : c.items) EXPECT_EQ(item.kind, PracticeKind::Drill);
 }
 
@@ -254,7 +255,8 @@ TEST(Curriculum, TimeHeuristicPractisesThreeDifferentIntervalsDrawnPerLearner) {
   }
   std::set<std::set<int>> drawn;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    const Curriculum c = make_curriculum(StudyCondition::TimeHeuristic, inputs_for(pool, seed), CurriculumConfig::parking());
+    const Curriculum c =
+        make_curriculum(StudyCondition::TimeHeuristic, inputs_for(pool, seed), CurriculumConfig::parking());
     std::set<int> intervals;
     for (const auto& item : c.items) intervals.insert(item.target_skills.at(0));
     EXPECT_EQ(intervals.size(), 3u) << "seed " << seed;

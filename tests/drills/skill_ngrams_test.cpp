@@ -21,9 +21,8 @@ TEST(SkillNgramTable, CountsConsecutiveSkillsOverAllExpertSequences) {
 }
 
 TEST(SkillNgramTable, MostFrequentContainingTheTarget) {
-  const SkillNgramTable table({seq({1, 2, 3, 4}), seq({1, 2, 3}), seq({2, 3, 4}), seq({5, 2, 3}), seq({5, 2, 3}),
-                               seq({5, 2, 3})},
-                              3);
+  const SkillNgramTable table(
+      {seq({1, 2, 3, 4}), seq({1, 2, 3}), seq({2, 3, 4}), seq({5, 2, 3}), seq({5, 2, 3}), seq({5, 2, 3})}, 3);
   EXPECT_EQ(table.most_frequent_containing(4, 1), (std::vector<SkillNgram>{{{2, 3, 4}, 2}}));
   EXPECT_EQ(table.most_frequent_containing(2, 1), (std::vector<SkillNgram>{{{5, 2, 3}, 3}}));
   EXPECT_EQ(table.most_frequent_containing(2, 2).size(), 2u);

@@ -18,8 +18,7 @@ ExpertiseTrial trial(int scenario, const std::vector<int>& expert, const std::ve
 }
 
 TEST(ExpertiseEstimation, StudentIdenticalToExpertIsNeverPenalised) {
-  const std::vector<ExpertiseTrial> trials = {trial(0, {1, 2, 3}, {1, 2, 3}, -0.4),
-                                              trial(1, {3, 4}, {3, 4}, -0.9)};
+  const std::vector<ExpertiseTrial> trials = {trial(0, {1, 2, 3}, {1, 2, 3}, -0.4), trial(1, {3, 4}, {3, 4}, -0.9)};
   const ExpertiseEstimate e = estimate_expertise(trials, 6, 7);
   for (int m = 0; m < 6; ++m) {
     EXPECT_EQ(e.expertise[static_cast<std::size_t>(m)], 0.0) << m;

@@ -32,9 +32,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   try {
     const sc::Json doc = sc::parse_json_text(sc::fuzz::as_text(data + 1, size - 1), "config.json");
-    if (data[0] % 2 == 0) read_gamepad(doc);
-    else read_compile_config(doc);
-  } catch (const sc::InputError&) {
-  }
+    if (data[0] % 2 == 0)
+      read_gamepad(doc);
+    else
+      read_compile_config(doc);
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -12,7 +12,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const sc::InputScript script = sc::read_input_script(file);
     sc::fuzz::fuzz_require(script.steps.size() <= 200000, "expanded step limit not applied");
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

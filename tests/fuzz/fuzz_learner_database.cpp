@@ -62,7 +62,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       record_one_trial(store);
       review_and_export(store);
     }
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -64,7 +64,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else {
       read_config(sc::parse_json_text(rest, "model.scm.json"), "model.scm.json");
     }
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -27,11 +27,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& stroke : drawing.strokes) sc::fuzz::fuzz_require(!stroke.empty(), "a parsed stroke is empty");
   try {
     require_finite(sc::writing::classic_glyph('a', drawing, "fuzz.txt"));
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   try {
     require_finite(sc::writing::balinese_glyph('B', drawing, "fuzz.txt"));
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -34,7 +34,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         round_trip(doc, sc::expertise_from_json, sc::expertise_to_json, "expertise changed in a round trip");
         break;
     }
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -10,8 +10,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   sc::writing::WritingTrial trial;
   try {
-    trial = sc::writing::parse_writing_trial(sc::parse_json_text(sc::fuzz::as_text(data, size), "fuzz.json"),
-                                             "fuzz.json");
+    trial =
+        sc::writing::parse_writing_trial(sc::parse_json_text(sc::fuzz::as_text(data, size), "fuzz.json"), "fuzz.json");
   } catch (const sc::InputError&) {
     return 0;
   }
@@ -25,7 +25,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     for (const auto& p : sc::writing::infill_trace(trial.trace()).points)
       sc::fuzz::fuzz_require(std::isfinite(p.x) && std::isfinite(p.y), "infilled point is not finite");
-  } catch (const sc::InputError&) {
-  }
+  } catch (const sc::InputError&) {}
   return 0;
 }

@@ -45,10 +45,12 @@ test::CommandResult run_script(const fs::path& script, const fs::path& dir) {
 std::vector<std::string> screens_shown(const std::string& output) {
   std::vector<std::string> screens;
   const std::string marker = " screen ";
-  for (std::size_t at = output.find("script: frame "); at != std::string::npos; at = output.find("script: frame ", at + 1)) {
+  for (std::size_t at = output.find("script: frame "); at != std::string::npos;
+       at = output.find("script: frame ", at + 1)) {
     const std::size_t line_end = output.find('\n', at);
     const std::string line = output.substr(at, line_end - at);
-    if (const std::size_t m = line.find(marker); m != std::string::npos) screens.push_back(line.substr(m + marker.size()));
+    if (const std::size_t m = line.find(marker); m != std::string::npos)
+      screens.push_back(line.substr(m + marker.size()));
   }
   return screens;
 }
@@ -66,8 +68,8 @@ bool shows_learner_input(const std::string& task, const std::string& trajectory_
     return std::any_of(actions.begin(), actions.end(), [](const Json& a) { return a.at(0).get<double>() > 0.5; });
   }
   const Json& points = doc.at("points");
-  return points.size() > 10 &&
-         std::any_of(points.begin(), points.end(), [](const Json& p) { return p.size() < 3 || p.at(2).get<double>() > 0; });
+  return points.size() > 10 && std::any_of(points.begin(), points.end(),
+                                           [](const Json& p) { return p.size() < 3 || p.at(2).get<double>() > 0; });
 }
 
 void expect_whole_session(const fs::path& dir, const std::string& learner, const std::string& task,
@@ -94,7 +96,8 @@ void expect_whole_session(const fs::path& dir, const std::string& learner, const
     EXPECT_EQ(t.record.device, device) << "trial " << t.seq;
     ASSERT_TRUE(t.record.score.has_value()) << "trial " << t.seq;
     EXPECT_LE(*t.record.score, 0.0);
-    EXPECT_TRUE(shows_learner_input(task, t.record.trajectory_json)) << "trial " << t.seq << ": " << t.record.trajectory_json;
+    EXPECT_TRUE(shows_learner_input(task, t.record.trajectory_json))
+        << "trial " << t.seq << ": " << t.record.trajectory_json;
   }
   EXPECT_EQ(store.diagnoses_of_session(summary.session.id).size(), 1u);
   EXPECT_TRUE(summary.pretest_mean.has_value());
@@ -102,8 +105,8 @@ void expect_whole_session(const fs::path& dir, const std::string& learner, const
 }
 
 void expect_whole_flow(const test::CommandResult& run) {
-  const std::vector<std::string> expected{"start",        "learn_welcome", "learn_instructions", "learn_trial",
-                                          "learn_diagnosis", "learn_trial", "learn_summary",     "start"};
+  const std::vector<std::string> expected{"start",           "learn_welcome", "learn_instructions", "learn_trial",
+                                          "learn_diagnosis", "learn_trial",   "learn_summary",      "start"};
   EXPECT_EQ(screens_shown(run.output), expected) << run.output;
   EXPECT_NE(run.output.find("finished at frame"), std::string::npos) << run.output;
 }
@@ -188,11 +191,13 @@ TEST(ScriptedGui, EscPausesAWritingTrialWithoutTimingThePause) {
   const auto trials = store.trials_of_session(learners[0].sessions.at(0).session.id);
   ASSERT_EQ(trials.size(), 1u);
   EXPECT_EQ(trials[0].record.kind, TrialKind::Pretest);
-  const writing::WritingTrial trial = writing::parse_writing_trial(parse_json_text(trials[0].record.trajectory_json, "trial"), "trial");
+  const writing::WritingTrial trial =
+      writing::parse_writing_trial(parse_json_text(trials[0].record.trajectory_json, "trial"), "trial");
   ASSERT_FALSE(trial.times.empty());
   EXPECT_LT(trial.times.back(), 8.0) << "7 frames of 0.4 s of writing; the 40 s pause must not count";
   EXPECT_GT(trial.times.back(), 1.0);
-  const auto far_right = std::find_if(trial.points.begin(), trial.points.end(), [](const auto& p) { return p.x > 250; });
+  const auto far_right =
+      std::find_if(trial.points.begin(), trial.points.end(), [](const auto& p) { return p.x > 250; });
   EXPECT_EQ(far_right, trial.points.end()) << "the mouse moved to the right while paused: no ink there";
 }
 
@@ -227,7 +232,8 @@ TEST(ScriptedGui, DeepOrHugeRepeatsAreRefusedQuickly) {
     const auto run = test::run_skillcoach("--data-dir '" + dir.string() + "' --script '" + (dir / name).string() + "'",
                                           "timeout 60 env SDL_VIDEODRIVER=offscreen");
     EXPECT_EQ(run.exit_code, 2) << name << ": " << run.output.substr(0, 300);
-    EXPECT_EQ(run.output.rfind("skillcoach: error: " + (dir / name).string() + ": $.steps[0]", 0), 0u) << run.output.substr(0, 300);
+    EXPECT_EQ(run.output.rfind("skillcoach: error: " + (dir / name).string() + ": $.steps[0]", 0), 0u)
+        << run.output.substr(0, 300);
     EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output.substr(0, 300);
   }
 }

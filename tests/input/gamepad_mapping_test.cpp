@@ -51,9 +51,9 @@ TEST(GamepadMapping, FullDiagonalReachesTheActionSquareCorner) {
 }
 
 TEST(GamepadMapping, NonFiniteOrOutOfRangeAxesGiveNeutralAndAreFlagged) {
-  for (const GamepadSample& s : {GamepadSample{kNaN, -1.0, 0, 0}, GamepadSample{0.5, kInf, 0, 0},
-                                 GamepadSample{0.5, -kInf, 0, 0}, GamepadSample{1.5, 0.0, 0, 0},
-                                 GamepadSample{0.0, -1.0001, 0, 0}}) {
+  for (const GamepadSample& s :
+       {GamepadSample{kNaN, -1.0, 0, 0}, GamepadSample{0.5, kInf, 0, 0}, GamepadSample{0.5, -kInf, 0, 0},
+        GamepadSample{1.5, 0.0, 0, 0}, GamepadSample{0.0, -1.0001, 0, 0}}) {
     const InputReading r = map_gamepad(s, {});
     EXPECT_TRUE(r.faulty) << s.left_x << " " << s.left_y;
     EXPECT_EQ(r.action, DriveAction{}) << s.left_x << " " << s.left_y;

@@ -45,8 +45,7 @@ TEST(KeyboardDrive, ArrowsAndWasdForTheSameDirectionDoNotAddUp) {
 
 TEST(KeyboardDrive, ReleaseAllForgetsEveryKey) {
   KeyboardDrive k;
-  for (DriveKey key : {DriveKey::Up, DriveKey::A, DriveKey::Right})
-    k.set_pressed(key, true);
+  for (DriveKey key : {DriveKey::Up, DriveKey::A, DriveKey::Right}) k.set_pressed(key, true);
   k.release_all();
   EXPECT_EQ(k.action(), DriveAction{});
   EXPECT_FALSE(k.pressed(DriveKey::Up));

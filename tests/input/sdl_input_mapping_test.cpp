@@ -18,9 +18,9 @@ TEST(SdlAxes, FullRangeMapsExactlyOntoTheUnitInterval) {
 TEST(SdlAxes, EveryRawValueIsAValidGamepadInput) {
   for (int raw = -32768; raw <= 32767; raw += 7) {
     const auto v = static_cast<Sint16>(raw);
-    const InputReading r = map_gamepad({normalized_stick_axis(v), normalized_stick_axis(v),
-                                        normalized_trigger_axis(v), normalized_trigger_axis(v)},
-                                       {});
+    const InputReading r = map_gamepad(
+        {normalized_stick_axis(v), normalized_stick_axis(v), normalized_trigger_axis(v), normalized_trigger_axis(v)},
+        {});
     ASSERT_FALSE(r.faulty) << raw;
   }
 }

@@ -99,8 +99,7 @@ TEST(ExpertStickDisplay, DraggingToTheShownKnobReproducesTheAction) {
 }
 
 TEST(ExpertStickDisplay, InvalidActionsAreShownAsSanitised) {
-  const JoystickView v =
-      joystick_view_for_action({std::numeric_limits<double>::quiet_NaN(), 5.0}, kCentre, kRadius);
+  const JoystickView v = joystick_view_for_action({std::numeric_limits<double>::quiet_NaN(), 5.0}, kCentre, kRadius);
   EXPECT_NEAR(v.knob.x, kCentre.x + kRadius, 1e-12);  // steer clamped to 1, accel NaN -> 0
   EXPECT_NEAR(v.knob.y, kCentre.y, 1e-12);
 }

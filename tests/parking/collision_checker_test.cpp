@@ -26,10 +26,11 @@ TEST(CollisionChecker, EmptyLayoutNeverCollides) {
 TEST(CollisionChecker, GapsAndOverlapsAlongTheCarAxis) {
   const CollisionChecker checker(one_parked_car());
   // Our car's front bumper is at x + 2.5; the obstacle's rear at 7.5.
-  EXPECT_FALSE(checker.car_collides({5.0 - 0.015, 0.0, 0.0, 0.0}));  // 1.5 cm gap: Box2D's raw skin would report contact
+  EXPECT_FALSE(
+      checker.car_collides({5.0 - 0.015, 0.0, 0.0, 0.0}));  // 1.5 cm gap: Box2D's raw skin would report contact
   EXPECT_FALSE(checker.car_collides({5.0 - 0.003, 0.0, 0.0, 0.0}));
-  EXPECT_TRUE(checker.car_collides({5.0 + 0.003, 0.0, 0.0, 0.0}));   // 3 mm of overlap
-  EXPECT_TRUE(checker.car_collides({10.0, 0.0, 1.0, 0.0}));           // right on top, rotated
+  EXPECT_TRUE(checker.car_collides({5.0 + 0.003, 0.0, 0.0, 0.0}));  // 3 mm of overlap
+  EXPECT_TRUE(checker.car_collides({10.0, 0.0, 1.0, 0.0}));         // right on top, rotated
 }
 
 TEST(CollisionChecker, SideBySideInNeighbouringSpots) {

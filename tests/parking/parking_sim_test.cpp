@@ -48,8 +48,18 @@ TEST(ParkingSim, GoldenFinalObservationIsASuccess) {
   // The golden file lists only the final observation of step 16; its reward must be the listed one.
   // Tolerance 5e-6: the 6-decimal rounding of the observation (<= 5e-7 per entry, weights summing to
   // 1.34) is amplified by d sqrt(s)/ds = 1/(2*0.0995) ~ 5; the measured residual is 1.2e-6.
-  ParkingObservation o{-0.181179, 0.128494, -0.638778, 2.638542, -0.235298, 0.971923,
-                       -0.18, 0.14, 0.0, 0.0, std::cos(std::numbers::pi / 2), 1.0};
+  ParkingObservation o{-0.181179,
+                       0.128494,
+                       -0.638778,
+                       2.638542,
+                       -0.235298,
+                       0.971923,
+                       -0.18,
+                       0.14,
+                       0.0,
+                       0.0,
+                       std::cos(std::numbers::pi / 2),
+                       1.0};
   const double reward = parking_reward(o);
   EXPECT_NEAR(reward, -0.099489, 5e-6);
   EXPECT_TRUE(is_success_reward(reward));

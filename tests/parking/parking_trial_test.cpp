@@ -76,9 +76,12 @@ TEST(ParkingTrial, RoundTripIsExact) {
 }
 
 TEST(ParkingTrial, MinimalFileWithUnknownFieldsAndGoalByCoordinates) {
-  const ParkingTrial t = parse_parking_trial(parse_json_text(
-      R"({"task":"parking","scenario":{"heading0":0.5,"goal":{"x":-18,"y":14,"heading":-1.5707963},"extra":1},
-          "actions":[[0,0]],"comment":"ignored","rewards":null})", "t.json"), "t.json");
+  const ParkingTrial t = parse_parking_trial(
+      parse_json_text(
+          R"({"task":"parking","scenario":{"heading0":0.5,"goal":{"x":-18,"y":14,"heading":-1.5707963},"extra":1},
+          "actions":[[0,0]],"comment":"ignored","rewards":null})",
+          "t.json"),
+      "t.json");
   EXPECT_EQ(t.scenario.goal_spot, 3);
   EXPECT_TRUE(t.scenario.reverse_in);  // heading -pi/2 in a +pi/2 spot
   EXPECT_EQ(t.scenario.variant, LotVariant::Classic);

@@ -36,11 +36,13 @@ TEST(LiveParkingDrive, LatchedRecordingReplaysExactly) {
 }
 
 TEST(LiveParkingDrive, ResponsiveRecordingReplaysExactly) {
-  for (std::uint64_t seed : {3u, 4u}) expect_replays_exactly(input::ActionTiming::Responsive, LotVariant::Classic, seed);
+  for (std::uint64_t seed : {3u, 4u})
+    expect_replays_exactly(input::ActionTiming::Responsive, LotVariant::Classic, seed);
 }
 
 TEST(LiveParkingDrive, ParkedLotRecordingReplaysExactly) {
-  for (std::uint64_t seed : {5u, 6u, 7u}) expect_replays_exactly(input::ActionTiming::Latched, LotVariant::Parked, seed);
+  for (std::uint64_t seed : {5u, 6u, 7u})
+    expect_replays_exactly(input::ActionTiming::Latched, LotVariant::Parked, seed);
 }
 
 TEST(LiveParkingDrive, SubstepStatesMatchParkingSimAtControlSteps) {

@@ -51,24 +51,26 @@ int count_colour(const RgbaImage& image, int r, int g, int b) {
 
 TEST(RenderCommand, DrawsTheTrialWithTheReferenceLook) {
   const auto out = test::test_output_dir() / "render_plain.png";
-  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(learner_trial_file("render_plain_trial.json")) + " --out " +
-                          quoted(out) + " --size 800x450");
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " +
+                                                     quoted(learner_trial_file("render_plain_trial.json")) + " --out " +
+                                                     quoted(out) + " --size 800x450");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const RgbaImage image = read_png(out);
   EXPECT_EQ(image.width, 800);
   EXPECT_EQ(image.height, 450);
   EXPECT_GT(count_colour(image, 100, 100, 100), 800 * 450 / 3);  // the lot's grey ground
-  EXPECT_GT(count_colour(image, 235, 189, 52), 20);               // the car's body
-  EXPECT_GT(count_colour(image, 100, 200, 255), 20);              // the goal landmark
+  EXPECT_GT(count_colour(image, 235, 189, 52), 20);              // the car's body
+  EXPECT_GT(count_colour(image, 100, 200, 255), 20);             // the goal landmark
 }
 
 TEST(RenderCommand, ExpertOverlayAddsTheGhostRibbon) {
   const auto plain = test::test_output_dir() / "render_plain_for_overlay.png";
   const auto overlay = test::test_output_dir() / "render_overlay.png";
   const std::string trial = quoted(learner_trial_file("render_overlay_trial.json"));
-  ASSERT_EQ(test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(plain)).exit_code, 0);
-  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(overlay) +
-                          " --overlay expert");
+  ASSERT_EQ(test::run_skillcoach("render --task parking --trajectory " + trial + " --out " + quoted(plain)).exit_code,
+            0);
+  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + trial + " --out " +
+                                                     quoted(overlay) + " --overlay expert");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const test::ImageDifference diff = test::compare_images(read_png(overlay), read_png(plain), 8);
   ASSERT_TRUE(diff.same_size);
@@ -78,7 +80,8 @@ TEST(RenderCommand, ExpertOverlayAddsTheGhostRibbon) {
 TEST(RenderCommand, BadTrialFileIsOneLineExitTwo) {
   const auto bad = test::test_output_dir() / "render_bad_trial.json";
   std::ofstream(bad) << R"({"task":"parking","scenario":{"heading0":"north","goal":{"spot":3}},"actions":[]})";
-  const test::CommandResult r = test::run_skillcoach("render --task parking --trajectory " + quoted(bad) + " --out /tmp/never.png");
+  const test::CommandResult r =
+      test::run_skillcoach("render --task parking --trajectory " + quoted(bad) + " --out /tmp/never.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("render_bad_trial.json"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("heading0"), std::string::npos) << r.output;
@@ -88,7 +91,8 @@ TEST(RenderCommand, BadTrialFileIsOneLineExitTwo) {
 TEST(FreeDriveScreen, HeadlessScreenshotIsDeterministic) {
   const auto a = test::test_output_dir() / "free_drive_a.png";
   const auto b = test::test_output_dir() / "free_drive_b.png";
-  const test::CommandResult r = test::run_skillcoach("screenshot --screen free_drive --size 1280x720 --out " + quoted(a));
+  const test::CommandResult r =
+      test::run_skillcoach("screenshot --screen free_drive --size 1280x720 --out " + quoted(a));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   ASSERT_EQ(test::run_skillcoach("screenshot --screen free_drive --size 1280x720 --out " + quoted(b)).exit_code, 0);
   const RgbaImage image = read_png(a);

@@ -71,7 +71,8 @@ TEST(ParkingViewGolden, EmptyLot) {
   scenario.heading0 = 0.6;
   scenario.goal_spot = 4;
   const ParkingLayout layout = make_layout(scenario);
-  EXPECT_TRUE(test::matches_golden(render_scene(start_view(scenario, layout), CameraMode::whole_lot), "parking/empty_lot"));
+  EXPECT_TRUE(
+      test::matches_golden(render_scene(start_view(scenario, layout), CameraMode::whole_lot), "parking/empty_lot"));
 }
 
 TEST(ParkingViewGolden, ParkedLotWithReverseInGoal) {

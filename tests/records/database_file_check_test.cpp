@@ -109,9 +109,8 @@ TEST(DatabaseFileCheck, RefusesANewerSchema) {
     SqliteDb raw(file, SqliteDb::Mode::ReadWriteCreate);
     raw.exec("PRAGMA user_version = " + std::to_string(current_schema_version() + 1));
   }
-  expect_refused(dir, "written by a newer SkillCoach (schema version " +
-                          std::to_string(current_schema_version() + 1) + ", this build understands up to " +
-                          std::to_string(current_schema_version()) + ")");
+  expect_refused(dir, "written by a newer SkillCoach (schema version " + std::to_string(current_schema_version() + 1) +
+                          ", this build understands up to " + std::to_string(current_schema_version()) + ")");
 }
 
 TEST(DatabaseFileCheck, RefusesAnotherProgramsSqliteFile) {
@@ -133,7 +132,10 @@ TEST(DatabaseFileCheck, AcceptsMissingEmptyAndOwnFiles) {
   EXPECT_TRUE(check_database_file(dir / "none.db", 1).is_new);
   test::write_bytes(dir / "empty.db", "");
   EXPECT_TRUE(check_database_file(dir / "empty.db", 1).is_new);
-  { SqliteDb raw(dir / "blank.db", SqliteDb::Mode::ReadWriteCreate); raw.exec("PRAGMA user_version = 0"); }
+  {
+    SqliteDb raw(dir / "blank.db", SqliteDb::Mode::ReadWriteCreate);
+    raw.exec("PRAGMA user_version = 0");
+  }
   EXPECT_TRUE(check_database_file(dir / "blank.db", 1).is_new);
   const auto state = check_database_file(make_database(dir), current_schema_version());
   EXPECT_FALSE(state.is_new);

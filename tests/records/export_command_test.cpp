@@ -14,7 +14,8 @@ namespace sc::records {
 namespace {
 
 TEST(ExportCommand, ExportsADatabaseAndRefusesBadOnesWithExitCode2) {
-  ASSERT_TRUE(std::filesystem::exists(sc::test::skillcoach_binary())) << sc::test::skillcoach_binary() << " is not built";
+  ASSERT_TRUE(std::filesystem::exists(sc::test::skillcoach_binary()))
+      << sc::test::skillcoach_binary() << " is not built";
   const auto dir = test::fresh_dir("export-command");
   {
     LearnerStore store(dir / "data");
@@ -22,20 +23,23 @@ TEST(ExportCommand, ExportsADatabaseAndRefusesBadOnesWithExitCode2) {
     store.record_trial(test::sample_trial(id, 0));
     store.record_trial(test::sample_trial(id, 1));
   }
-  const auto ok = sc::test::run_skillcoach("export --data-dir '" + (dir / "data").string() + "' --out '" + (dir / "all.json").string() + "'");
+  const auto ok = sc::test::run_skillcoach("export --data-dir '" + (dir / "data").string() + "' --out '" +
+                                           (dir / "all.json").string() + "'");
   EXPECT_EQ(ok.exit_code, 0) << ok.output;
   EXPECT_NE(ok.output.find("exported 2 trials"), std::string::npos) << ok.output;
   const Json doc = read_json_file(dir / "all.json");
   EXPECT_EQ(doc["learners"][0]["sessions"][0]["trials"][1]["trajectory"],
             Json::parse(test::sample_trial(1, 1).trajectory_json));
 
-  const auto missing = sc::test::run_skillcoach("export --data-dir '" + (dir / "none").string() + "' --out '" + (dir / "x.json").string() + "'");
+  const auto missing = sc::test::run_skillcoach("export --data-dir '" + (dir / "none").string() + "' --out '" +
+                                                (dir / "x.json").string() + "'");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.output, "skillcoach: error: " + (dir / "none" / "skillcoach.db").string() + ": no such database\n");
 
   std::filesystem::create_directories(dir / "bad");
   test::write_bytes(dir / "bad" / "skillcoach.db", std::string(5000, '\x01'));
-  const auto bad = sc::test::run_skillcoach("export --data-dir '" + (dir / "bad").string() + "' --out '" + (dir / "y.json").string() + "'");
+  const auto bad = sc::test::run_skillcoach("export --data-dir '" + (dir / "bad").string() + "' --out '" +
+                                            (dir / "y.json").string() + "'");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_EQ(bad.output.rfind("skillcoach: error: " + (dir / "bad" / "skillcoach.db").string() + ": not a SQLite", 0),
             0u)

@@ -37,8 +37,8 @@ void expect_trials(const LearnerStore& store, std::int64_t session_id, int count
 // private directory (a fresh clone in a mktemp -d folder is 0700), so these folders live in the system's
 // temporary directory instead.
 std::filesystem::path dir_for_child(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("skillcoach-records-" + std::to_string(getpid()) + "-" + name);
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("skillcoach-records-" + std::to_string(getpid()) + "-" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   if (geteuid() == 0 && chown(dir.c_str(), 65534, 65534) != 0) ADD_FAILURE() << "chown failed";
@@ -232,8 +232,10 @@ TEST(LearnerStoreFaults, ATrialNumberTakenByAnotherTrialIsNotReportedStored) {
   ASSERT_TRUE(store.record_trial(sample_trial(id, 0)).stored);
   {
     SqliteDb other(store.database_path(), SqliteDb::Mode::ReadWriteCreate);
-    other.exec("INSERT INTO trials(session_id, seq, kind, round, task, scenario, trajectory, device, started, finished)"
-               " VALUES(" + std::to_string(id) + ", 2, 'pretest', 1, 'parking', '{}', '{}', 'mouse', 'a', 'b')");
+    other.exec(
+        "INSERT INTO trials(session_id, seq, kind, round, task, scenario, trajectory, device, started, finished)"
+        " VALUES(" +
+        std::to_string(id) + ", 2, 'pretest', 1, 'parking', '{}', '{}', 'mouse', 'a', 'b')");
   }
   const auto clash = store.record_trial(sample_trial(id, 1));
   EXPECT_FALSE(clash.stored);
@@ -268,7 +270,8 @@ TEST(LearnerStoreFaults, UnreadableSpillFileIsMovedAsideNotOverwritten) {
   EXPECT_TRUE(contains(store.open_message(), spill.string() + ": not valid JSON")) << store.open_message();
   EXPECT_TRUE(contains(store.open_message(), "moved to " + spill.string() + ".unreadable")) << store.open_message();
   EXPECT_FALSE(std::filesystem::exists(spill));
-  EXPECT_EQ(test::file_bytes(spill.string() + ".unreadable"), "{\"format\": \"skillcoach-pending-writes\", \"writes\": [");
+  EXPECT_EQ(test::file_bytes(spill.string() + ".unreadable"),
+            "{\"format\": \"skillcoach-pending-writes\", \"writes\": [");
 }
 
 }  // namespace

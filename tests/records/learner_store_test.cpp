@@ -183,7 +183,8 @@ TEST(LearnerStore, RejectsInvalidRecordsWithoutQueueingThem) {
             store.database_path().string() + ": unknown session id " + std::to_string(id + 99));
   EXPECT_EQ(test::error_of([&] { store.begin_session(sample_session("")); }), "learner record: learner name is empty");
   // Blank names (the schema's CHECK trims spaces only) and control bytes: a plain message, not SQLite's text.
-  EXPECT_EQ(test::error_of([&] { store.begin_session(sample_session("\t\t")); }), "learner record: learner name is blank");
+  EXPECT_EQ(test::error_of([&] { store.begin_session(sample_session("\t\t")); }),
+            "learner record: learner name is blank");
   EXPECT_EQ(test::error_of([&] { store.ensure_learner("   ", "t"); }), "learner record: learner name is blank");
   EXPECT_EQ(test::error_of([&] { store.ensure_learner("Ada\x1b[2J", "t"); }),
             "learner record: learner name contains a control character");
@@ -212,8 +213,9 @@ TEST(LearnerStore, ReadOnlyStoreReadsButNeverWrites) {
   }
   EXPECT_EQ(test::file_bytes(dir / "skillcoach.db"), before);
   EXPECT_FALSE(std::filesystem::exists(dir / "skillcoach.db.pending.json"));
-  EXPECT_NE(test::error_of([&] { LearnerStore missing(dir / "none", StoreOptions{.read_only = true}); })
-                .find("no such database"),
+  EXPECT_NE(test::error_of([&] {
+              LearnerStore missing(dir / "none", StoreOptions{.read_only = true});
+            }).find("no such database"),
             std::string::npos);
 }
 

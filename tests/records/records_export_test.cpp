@@ -90,7 +90,10 @@ TEST(RecordsExport, ADamagedRowIsNamedAndTheRestExported) {
   ASSERT_EQ(result.problems.size(), 1u);
   const auto& problem = result.problems[0];
   EXPECT_EQ(problem.rfind((dir / "data" / "skillcoach.db").string() + ": session " + std::to_string(id) +
-                              ", trial 2 left out: stored JSON: not valid JSON", 0), 0u) << problem;
+                              ", trial 2 left out: stored JSON: not valid JSON",
+                          0),
+            0u)
+      << problem;
   const Json doc = read_json_file(dir / "out.json");
   const Json& trials = doc["learners"][0]["sessions"][0]["trials"];
   ASSERT_EQ(trials.size(), 2u);
@@ -107,7 +110,8 @@ TEST(RecordsExport, RefusesToWriteOverTheDatabaseItself) {
   const auto message = test::error_of([&] { export_database(dir, db); });
   EXPECT_NE(message.find("is the learner database's own file"), std::string::npos) << message;
   EXPECT_EQ(test::file_bytes(db), before);
-  EXPECT_NE(test::error_of([&] { export_database(dir, dir / "." / "skillcoach.db-wal"); }).find("own file"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { export_database(dir, dir / "." / "skillcoach.db-wal"); }).find("own file"),
+            std::string::npos);
 }
 
 }  // namespace

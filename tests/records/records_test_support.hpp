@@ -65,12 +65,13 @@ inline std::string parking_trajectory(int steps, int variant) {
     actions.push_back({std::sin(t) * 0.8, std::cos(t) * 0.5});
     states.push_back({10.0 + t, 5.0 - 0.5 * t, 0.1 * t, 1.5});
   }
-  return Json{{"task", "parking"},
-              {"scenario", {{"heading0", 0.25 * variant}, {"goal", {{"x", 3.0}, {"y", -2.0}, {"heading", 1.57}}},
-                            {"variant", "classic"}}},
-              {"actions", actions},
-              {"states", states},
-              {"source", "learner"}}
+  return Json{
+      {"task", "parking"},
+      {"scenario",
+       {{"heading0", 0.25 * variant}, {"goal", {{"x", 3.0}, {"y", -2.0}, {"heading", 1.57}}}, {"variant", "classic"}}},
+      {"actions", actions},
+      {"states", states},
+      {"source", "learner"}}
       .dump();
 }
 

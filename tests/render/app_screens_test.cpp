@@ -33,7 +33,8 @@ TEST(AppScreens, StartScreenMatchesGolden) {
 TEST(AppScreens, ScreenshotIsDeterministicAcrossRuns) {
   const auto a = test_output_dir() / "start_a.png", b = test_output_dir() / "start_b.png";
   ASSERT_EQ(run_skillcoach("screenshot --screen start --size 640x360 --out '" + a.string() + "'").exit_code, 0);
-  ASSERT_EQ(run_skillcoach("screenshot --screen start --size 640x360 --frames 5 --out '" + b.string() + "'").exit_code, 0);
+  ASSERT_EQ(run_skillcoach("screenshot --screen start --size 640x360 --frames 5 --out '" + b.string() + "'").exit_code,
+            0);
   const ImageDifference diff = compare_images(read_png(a), read_png(b), 0);
   EXPECT_TRUE(diff.same_size);
   EXPECT_EQ(diff.differing_pixels, 0u);
@@ -69,7 +70,8 @@ TEST(AppScreens, UnknownScreenIsOneLineExitTwo) {
 
 TEST(AppScreens, MissingShadersAndFontsAreOneLineExitTwo) {
   const auto out = test_output_dir() / "never.png";
-  CommandResult r = run_skillcoach("screenshot --out '" + out.string() + "'", "SKILLCOACH_SHADER_DIR=/nonexistent/shaders");
+  CommandResult r =
+      run_skillcoach("screenshot --out '" + out.string() + "'", "SKILLCOACH_SHADER_DIR=/nonexistent/shaders");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("/nonexistent/shaders/scene.vert"), std::string::npos) << r.output;

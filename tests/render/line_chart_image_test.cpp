@@ -29,7 +29,9 @@ TEST(LineChartImage, SeriesRisesWithItsValuesAndTheReferenceSpansThePanel) {
   figure.x_label = "epochs";
   figure.width = 640;
   figure.height = 400;
-  figure.panels = {{"reward", "%.1f", {{"student", Color::hex(0xe0833a), {0, 10}, {-1.0, -0.2}}},
+  figure.panels = {{"reward",
+                    "%.1f",
+                    {{"student", Color::hex(0xe0833a), {0, 10}, {-1.0, -0.2}}},
                     {{"expert", Color::hex(0x3a8f5c), -0.1}}}};
   auto context = create_offscreen_context(offscreen_backend_from_env(), figure.width, figure.height);
   const RgbaImage image = render_line_chart_figure(*context, figure);

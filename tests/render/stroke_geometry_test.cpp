@@ -12,8 +12,7 @@ namespace {
 
 double area(const Triangles& t) {  // sum of |triangle areas| (overlaps counted twice)
   double total = 0;
-  for (std::size_t i = 0; i + 2 < t.size(); i += 3)
-    total += std::fabs(cross(t[i + 1] - t[i], t[i + 2] - t[i])) * 0.5;
+  for (std::size_t i = 0; i + 2 < t.size(); i += 3) total += std::fabs(cross(t[i + 1] - t[i], t[i + 2] - t[i])) * 0.5;
   return total;
 }
 

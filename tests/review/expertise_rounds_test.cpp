@@ -45,10 +45,12 @@ TEST(ExpertiseRounds, EchoesTheStoredDiagnosisOfEveryRound) {
     EXPECT_EQ(drilled, played) << "round " << round;
     EXPECT_FALSE(drilled.empty());
     for (int m : drilled) EXPECT_NE(std::find(targets.begin(), targets.end(), m), targets.end()) << m;
-    for (int m = 0; m < stored.num_skills(); ++m) seen[static_cast<std::size_t>(m)] += stored.occurrences[static_cast<std::size_t>(m)] > 0;
+    for (int m = 0; m < stored.num_skills(); ++m)
+      seen[static_cast<std::size_t>(m)] += stored.occurrences[static_cast<std::size_t>(m)] > 0;
   }
   // A skill is listed when some round has evidence for it, and only then.
-  EXPECT_EQ(rounds.skills.size(), static_cast<std::size_t>(std::count_if(seen.begin(), seen.end(), [](int n) { return n > 0; })));
+  EXPECT_EQ(rounds.skills.size(),
+            static_cast<std::size_t>(std::count_if(seen.begin(), seen.end(), [](int n) { return n > 0; })));
   EXPECT_LT(rounds.lowest, 0.0);  // the cut-short pre-test trial missed skills
 }
 

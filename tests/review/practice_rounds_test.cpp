@@ -28,7 +28,8 @@ TEST(PracticeRounds, StatePlannedAndPlayedPracticeAgainstTheBudget) {
               static_cast<int>(record.trials_of(records::TrialKind::Practice, rounds[r].round).size()));
   }
   PracticeRound one{1, "Skills", 12, 150, 152, 11};
-  EXPECT_EQ(practice_round_text(one), "Round 1, Skills: 12 trials planned, 11 played; 150 time-steps of a 152-step budget (-1.3 %)");
+  EXPECT_EQ(practice_round_text(one),
+            "Round 1, Skills: 12 trials planned, 11 played; 150 time-steps of a 152-step budget (-1.3 %)");
 }
 
 TEST(PracticeRounds, UnreadableCurriculumNamesTheSession) {

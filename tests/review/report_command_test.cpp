@@ -52,8 +52,8 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
   const fs::path out = test::scratch_path("review", "report_all");
   fs::remove_all(out);
   const std::string before = database_bytes(fixture.data_dir);
-  const test::CommandResult run = test::run_skillcoach("report --data-dir " + quoted(fixture.data_dir) +
-                                                       " --learner Ada --out " + quoted(out));
+  const test::CommandResult run =
+      test::run_skillcoach("report --data-dir " + quoted(fixture.data_dir) + " --learner Ada --out " + quoted(out));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(database_bytes(fixture.data_dir), before);
 
@@ -115,9 +115,9 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
 TEST_F(ReportCommand, OneSessionOnly) {
   const fs::path out = test::scratch_path("review", "report_one");
   fs::remove_all(out);
-  const test::CommandResult run = test::run_skillcoach("report --data-dir " + quoted(fixture.data_dir) +
-                                                       " --learner Ada --session " + std::to_string(fixture.session_id) +
-                                                       " --out " + quoted(out));
+  const test::CommandResult run =
+      test::run_skillcoach("report --data-dir " + quoted(fixture.data_dir) + " --learner Ada --session " +
+                           std::to_string(fixture.session_id) + " --out " + quoted(out));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_TRUE(fs::exists(out / "report.html"));
   EXPECT_NE(run.output.find("1 session(s)"), std::string::npos) << run.output;

@@ -60,8 +60,12 @@ ReviewFixture build_fixture() {
           // heuristic extractor this checkout falls back to without a trained model.
           s.submit_test_trial(attempt(s.test_expert_trial(), 0.6, seed, s.item_index() == 1 ? 2 : 0), times);
           break;
-        case SessionPhase::Evaluation: s.submit_test_trial(attempt(s.test_expert_trial(), 0.85, seed), times); break;
-        case SessionPhase::Diagnosis: s.analyse(); break;
+        case SessionPhase::Evaluation:
+          s.submit_test_trial(attempt(s.test_expert_trial(), 0.85, seed), times);
+          break;
+        case SessionPhase::Diagnosis:
+          s.analyse();
+          break;
         case SessionPhase::Drills: {
           const int item = s.current_item();
           const Json reference = s.kit().drill_trial(s.drill(item));
@@ -69,7 +73,8 @@ ReviewFixture build_fixture() {
           s.submit_practice(attempt(reference, 0.8, seed), times);
           break;
         }
-        case SessionPhase::Summary: break;
+        case SessionPhase::Summary:
+          break;
       }
     }
   }

@@ -78,9 +78,11 @@ TEST(TrialReview, PracticeTrialShowsTheDrillGhostWithItsPlannedSkills) {
   // The ghost's skills are the stored drill's n-gram.
   const auto* curriculum = fixture_review().record().curriculum(t.stored.record.round);
   ASSERT_NE(curriculum, nullptr);
-  const Json stored_skills = Json::parse(curriculum->drills.at(static_cast<std::size_t>(*t.stored.record.drill_index)).skills_json);
+  const Json stored_skills =
+      Json::parse(curriculum->drills.at(static_cast<std::size_t>(*t.stored.record.drill_index)).skills_json);
   ASSERT_EQ(stored_skills.size(), t.ghost_skills.size());
-  for (std::size_t i = 0; i < t.ghost_skills.size(); ++i) EXPECT_EQ(stored_skills[i].get<int>(), t.ghost_skills[i].skill);
+  for (std::size_t i = 0; i < t.ghost_skills.size(); ++i)
+    EXPECT_EQ(stored_skills[i].get<int>(), t.ghost_skills[i].skill);
 }
 
 TEST(TrialReview, EvaluationTrialGetsARePlannedExpert) {
@@ -94,9 +96,7 @@ TEST(TrialReview, EvaluationTrialGetsARePlannedExpert) {
   EXPECT_NEAR(t.expert_track.points.back().y, replay.steps.back().vehicle.y, 1e-9);
 }
 
-TEST(TrialReview, UnknownTrialIsAnInputError) {
-  EXPECT_THROW(fixture_review().trial(999), InputError);
-}
+TEST(TrialReview, UnknownTrialIsAnInputError) { EXPECT_THROW(fixture_review().trial(999), InputError); }
 
 }  // namespace
 }  // namespace sc::review

@@ -17,7 +17,8 @@ class ReviewScreenGolden : public ::testing::TestWithParam<const char*> {};
 TEST_P(ReviewScreenGolden, MatchesGolden) {
   const std::string screen = GetParam();
   const auto out = test_output_dir() / (screen + ".png");
-  const CommandResult shot = run_skillcoach("screenshot --screen " + screen + " --size 1280x720 --out '" + out.string() + "'");
+  const CommandResult shot =
+      run_skillcoach("screenshot --screen " + screen + " --size 1280x720 --out '" + out.string() + "'");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
   EXPECT_TRUE(matches_golden(read_png(out), "review/screen_" + screen));
 }

@@ -24,7 +24,8 @@ class ReviewPictures : public ::testing::Test {
   static void SetUpTestSuite() {
     const auto& f = test::parking_review_fixture();
     const records::LearnerStore store(f.data_dir, records::StoreOptions{.read_only = true});
-    review_ = std::make_unique<review::SessionReview>(test::parking_kit(), review::load_session_record(store, f.session_id));
+    review_ =
+        std::make_unique<review::SessionReview>(test::parking_kit(), review::load_session_record(store, f.session_id));
   }
   static void TearDownTestSuite() { review_.reset(); }
 
@@ -37,16 +38,16 @@ TEST_F(ReviewPictures, TrialViewerMatchesGolden) {
   // The cut-short second pre-test trial would show little; the first shows a whole attempt.
   const int seq = review_->record().trials_of(records::TrialKind::Pretest).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image = review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial),
-                                                          kWidth, kHeight);
+  const RgbaImage image =
+      review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer"));
 }
 
 TEST_F(ReviewPictures, PracticeTrialWithGhostMatchesGolden) {
   const int seq = review_->record().trials_of(records::TrialKind::Practice).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image = review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial),
-                                                          kWidth, kHeight);
+  const RgbaImage image =
+      review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer_practice"));
 }
 
@@ -69,8 +70,8 @@ TEST_F(ReviewPictures, BeforeAfterMatchesGolden) {
 
 TEST_F(ReviewPictures, ExpertiseChartMatchesGolden) {
   const review::ExpertiseRounds rounds = review::expertise_rounds(review_->kit(), review_->record());
-  const RgbaImage image =
-      review_view::render_expertise_chart_image(*context_, expertise_chart(rounds), "Expertise per skill across rounds", kWidth);
+  const RgbaImage image = review_view::render_expertise_chart_image(*context_, expertise_chart(rounds),
+                                                                    "Expertise per skill across rounds", kWidth);
   EXPECT_TRUE(test::matches_golden(image, "review/expertise_chart"));
 }
 

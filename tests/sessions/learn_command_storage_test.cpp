@@ -128,7 +128,8 @@ TEST(LearnCommandStorage, ASecondTrainerOnTheSameLearnerIsRefused) {
   if (first == 0) {
     dup2(out[1], STDOUT_FILENO);
     close(out[0]);
-    const std::string command = "exec '" + test::skillcoach_binary() + "' " + args + " --learner same --trial-delay-ms 5000";
+    const std::string command =
+        "exec '" + test::skillcoach_binary() + "' " + args + " --learner same --trial-delay-ms 5000";
     execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }

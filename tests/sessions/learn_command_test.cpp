@@ -100,7 +100,8 @@ TEST(LearnCommand, ParkingSessionEndToEndOnTheStudyCornerFirstThenTheWholeLot) {
 
 TEST(LearnCommand, WritingSessionEndToEnd) {
   const fs::path dir = fresh_dir("writing");
-  const test::CommandResult r = test::run_skillcoach("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
+  const test::CommandResult r =
+      test::run_skillcoach("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
   expect_complete_session(dir, "e2e", "writing");
@@ -137,7 +138,8 @@ PrintedPlan parse_plan(const std::string& output) {
     plan.first_targets.push_back(target);
     plan.sessions.push_back(sessions);
   }
-  for (at = output.find("(drilled, "); at != std::string::npos; at = output.find("(drilled, ", at + 1)) ++plan.drilled_lines;
+  for (at = output.find("(drilled, "); at != std::string::npos; at = output.find("(drilled, ", at + 1))
+    ++plan.drilled_lines;
   return plan;
 }
 
@@ -148,8 +150,9 @@ void expect_equal_budgets(const std::string& task) {
   std::map<std::string, PrintedPlan> plans;
   for (const char* condition : {"full-trajectory", "time-heuristic", "skills", "drills", "ind-drills", "adaptive"}) {
     const fs::path dir = fresh_dir(task + "_budget_" + condition);
-    const test::CommandResult r = test::run_skillcoach("learn --task " + task + " --condition " + condition +
-                                                       " --pretest 5 --eval 2 --learner budget --data-dir " + dir.string());
+    const test::CommandResult r =
+        test::run_skillcoach("learn --task " + task + " --condition " + condition +
+                             " --pretest 5 --eval 2 --learner budget --data-dir " + dir.string());
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const PrintedPlan plan = parse_plan(r.output);
     ASSERT_EQ(plan.condition, condition) << r.output;

@@ -20,8 +20,8 @@ class LearnScreenGolden : public ::testing::TestWithParam<const char*> {};
 TEST_P(LearnScreenGolden, MatchesGolden) {
   const std::string screen = GetParam();
   const auto out = test_output_dir() / (screen + ".png");
-  const CommandResult shot = run_skillcoach(std::string("screenshot --screen ") + screen + " --size 1280x720 --out '" +
-                                           out.string() + "'");
+  const CommandResult shot =
+      run_skillcoach(std::string("screenshot --screen ") + screen + " --size 1280x720 --out '" + out.string() + "'");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
   EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen));
 }

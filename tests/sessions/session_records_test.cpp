@@ -46,9 +46,9 @@ TEST(SessionRecords, TrialRowKeepsTheDocumentAndItsScenario) {
   EXPECT_EQ(Json::parse(row.trajectory_json), trial);
   EXPECT_EQ(row.drill_index, 4);
   EXPECT_EQ(row.score, -0.25);
-  EXPECT_EQ(trial_record({9, records::TrialKind::Demo, 1, 4}, "writing", "mouse", Json::object(), std::nullopt)
-                .scenario_json,
-            "{}");
+  EXPECT_EQ(
+      trial_record({9, records::TrialKind::Demo, 1, 4}, "writing", "mouse", Json::object(), std::nullopt).scenario_json,
+      "{}");
 }
 
 }  // namespace

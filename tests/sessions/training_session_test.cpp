@@ -59,10 +59,17 @@ void play_until(TrainingSession& s, SessionPhase stop, int stop_item = 0) {
   while (!(s.phase() == stop && s.item_index() >= stop_item) && s.phase() != SessionPhase::Summary) {
     switch (s.phase()) {
       case SessionPhase::Pretest:
-      case SessionPhase::Evaluation: play_test_trial(s); break;
-      case SessionPhase::Diagnosis: s.analyse(); break;
-      case SessionPhase::Drills: play_practice_slot(s); break;
-      case SessionPhase::Summary: break;
+      case SessionPhase::Evaluation:
+        play_test_trial(s);
+        break;
+      case SessionPhase::Diagnosis:
+        s.analyse();
+        break;
+      case SessionPhase::Drills:
+        play_practice_slot(s);
+        break;
+      case SessionPhase::Summary:
+        break;
     }
   }
 }
@@ -80,8 +87,9 @@ TEST(TrainingSession, PretestUsesDiverseScenariosAndKeepsEveryTrialWithItsResume
   std::sort(covered.begin(), covered.end());
   covered.erase(std::unique(covered.begin(), covered.end()), covered.end());
   EXPECT_EQ(covered.size(), 4u);
-  EXPECT_DOUBLE_EQ(s.test_time_limit(),
-                   kit.time_limit_seconds(kit.expert_pool()[static_cast<std::size_t>(s.pretest_pool_indices()[0])].steps.length()));
+  EXPECT_DOUBLE_EQ(
+      s.test_time_limit(),
+      kit.time_limit_seconds(kit.expert_pool()[static_cast<std::size_t>(s.pretest_pool_indices()[0])].steps.length()));
 
   play_test_trial(s);
   auto point = store.find_unfinished_session("ada", "toy");
@@ -282,8 +290,9 @@ TEST(TrainingSession, ResumesWhereItStoppedAtEveryPointOfTheSession) {
     SessionPhase phase;
     int item;
   };
-  for (const Stop stop : {Stop{SessionPhase::Pretest, 2}, Stop{SessionPhase::Diagnosis, 0}, Stop{SessionPhase::Drills, 1},
-                          Stop{SessionPhase::Evaluation, 0}, Stop{SessionPhase::Evaluation, 2}}) {
+  for (const Stop stop :
+       {Stop{SessionPhase::Pretest, 2}, Stop{SessionPhase::Diagnosis, 0}, Stop{SessionPhase::Drills, 1},
+        Stop{SessionPhase::Evaluation, 0}, Stop{SessionPhase::Evaluation, 2}}) {
     records::LearnerStore store(fresh_dir("resume"));
     records::SessionProgress at;
     {

@@ -8,11 +8,11 @@
 #include <iterator>
 
 #include "engine/core/error.hpp"
-#include "tests/support/scratch_files.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/skills/model_file.hpp"
 #include "teaching/skills/synthetic_sequences.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace sc {
 namespace {

@@ -23,8 +23,8 @@ TEST(PackedLstm, ForwardAndGradientsMatchPlainAutograd) {
 
   const torch::Tensor out = packed_lstm(xproj, h0, c0, w, mask, packing);
   (out * probe).sum().backward();
-  const std::vector<torch::Tensor> fast{out.detach(), xproj.grad().clone(), h0.grad().clone(), c0.grad().clone(),
-                                        w.grad().clone(), mask.grad().clone()};
+  const std::vector<torch::Tensor> fast{out.detach(),      xproj.grad().clone(), h0.grad().clone(),
+                                        c0.grad().clone(), w.grad().clone(),     mask.grad().clone()};
   for (auto* t : {&xproj, &h0, &c0, &w, &mask}) t->mutable_grad() = torch::Tensor();
 
   std::vector<torch::Tensor> outs(static_cast<std::size_t>(n));
@@ -47,9 +47,10 @@ TEST(PackedLstm, ForwardAndGradientsMatchPlainAutograd) {
   const std::vector<torch::Tensor> reference{slow.detach(), xproj.grad(), h0.grad(), c0.grad(), w.grad(), mask.grad()};
   const char* names[] = {"output", "d xproj", "d h0", "d c0", "d w_hh", "d mask"};
   for (std::size_t k = 0; k < fast.size(); ++k)
-    EXPECT_TRUE(torch::allclose(fast[k], reference[k], 1e-4, 1e-5)) << names[k] << "\n" << fast[k] << "\n" << reference[k];
+    EXPECT_TRUE(torch::allclose(fast[k], reference[k], 1e-4, 1e-5)) << names[k] << "\n"
+                                                                    << fast[k] << "\n"
+                                                                    << reference[k];
 }
-
 
 // hard_readout (each pass from its hard start, raw-row steps) must give exactly the boundaries and skills of
 // the training-time encoder in eval mode, on untrained networks whose boundaries fall anywhere (also before

@@ -90,7 +90,8 @@ TEST(RepeatBoundaries, KeepsAtMostMaxBoundariesAtLeastMinSeparationApart) {
   std::mt19937 rng(5);
   const auto symbols = random_symbols(4, rng);
   std::vector<StepSequence> demos;
-  for (int i = 0; i < 40; ++i) demos.push_back(concatenate(symbols, {i % 4, (i / 4) % 4, (i / 16) % 4, i % 3, (i + 1) % 4}).steps);
+  for (int i = 0; i < 40; ++i)
+    demos.push_back(concatenate(symbols, {i % 4, (i / 4) % 4, (i / 16) % 4, i % 3, (i + 1) % 4}).steps);
   RepeatBoundaryConfig config;
   config.context = 16;
   config.max_boundaries = 2;

@@ -26,7 +26,8 @@ BcDataset toy_pairs(int n) {
 std::vector<int> kept_reverse_ids(const BcDataset& d) {
   std::vector<int> ids;
   for (int i = 0; i < d.size(); ++i)
-    if (d.actions[static_cast<std::size_t>(2 * i)] < 0) ids.push_back(static_cast<int>(d.states[static_cast<std::size_t>(i)]));
+    if (d.actions[static_cast<std::size_t>(2 * i)] < 0)
+      ids.push_back(static_cast<int>(d.states[static_cast<std::size_t>(i)]));
   return ids;
 }
 
@@ -37,7 +38,8 @@ TEST(BcDatasets, ReverseFilterKeepsTwentyPercentOfReversePairsAndEveryOtherPair)
   EXPECT_EQ(count_reverse_pairs(kept), 20);
   EXPECT_EQ(kept.size(), 220);
   // Original order kept, and every pair is an unchanged copy of one of the originals.
-  for (int i = 1; i < kept.size(); ++i) EXPECT_LT(kept.states[static_cast<std::size_t>(i - 1)], kept.states[static_cast<std::size_t>(i)]);
+  for (int i = 1; i < kept.size(); ++i)
+    EXPECT_LT(kept.states[static_cast<std::size_t>(i - 1)], kept.states[static_cast<std::size_t>(i)]);
   for (int i = 0; i < kept.size(); ++i) {
     const int id = static_cast<int>(kept.states[static_cast<std::size_t>(i)]);
     EXPECT_EQ(kept.actions[static_cast<std::size_t>(2 * i + 1)], static_cast<float>(id));
@@ -90,7 +92,8 @@ TEST(BcDatasets, SamplePairsDrawsDistinctPairsInOrderDeterministically) {
   const BcDataset all = toy_pairs(40);
   const BcDataset a = sample_pairs(all, 10, 7);
   ASSERT_EQ(a.size(), 10);
-  for (int i = 1; i < a.size(); ++i) EXPECT_LT(a.states[static_cast<std::size_t>(i - 1)], a.states[static_cast<std::size_t>(i)]);
+  for (int i = 1; i < a.size(); ++i)
+    EXPECT_LT(a.states[static_cast<std::size_t>(i - 1)], a.states[static_cast<std::size_t>(i)]);
   for (int i = 0; i < a.size(); ++i)  // each drawn pair is whole: its action belongs to its state
     EXPECT_EQ(a.actions[static_cast<std::size_t>(2 * i + 1)], a.states[static_cast<std::size_t>(i)]);
   EXPECT_EQ(sample_pairs(all, 10, 7).states, a.states);

@@ -11,7 +11,8 @@ namespace {
 
 TEST(ExpertDrives, PlansParkAndGiveOnePairPerStep) {
   int ticks = 0;
-  const std::vector<ParkingTrial> drives = plan_expert_drives(3, 9, GoalRegion::WholeLot, [&](int done) { ticks = done; });
+  const std::vector<ParkingTrial> drives =
+      plan_expert_drives(3, 9, GoalRegion::WholeLot, [&](int done) { ticks = done; });
   ASSERT_EQ(drives.size(), 3u);
   EXPECT_EQ(ticks, 3);
   std::size_t steps = 0;

@@ -71,7 +71,8 @@ TEST(FinetuneData, PairsAreTheExpertStepsOfTheConditionsMaterialInOrder) {
 
 TEST(FinetuneData, SameSeedSameDataAndTheDefaultSizeIsOneIndividualizedRound) {
   const FinetuneMaterial m = toy_material();
-  EXPECT_EQ(finetune_data(StudyCondition::Drills, m, 50, 9).pairs.states, finetune_data(StudyCondition::Drills, m, 50, 9).pairs.states);
+  EXPECT_EQ(finetune_data(StudyCondition::Drills, m, 50, 9).pairs.states,
+            finetune_data(StudyCondition::Drills, m, 50, 9).pairs.states);
   EXPECT_NE(finetune_data(StudyCondition::FullTrajectory, m, 50, 9).pairs.states,
             finetune_data(StudyCondition::FullTrajectory, m, 50, 10).pairs.states);
   // One drill per target (N_drills = 1), each an n-gram of 3 segments of 4..6 steps.

@@ -9,8 +9,8 @@
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/students/bc_datasets.hpp"
 #include "teaching/students/expert_drives.hpp"
-#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 
 namespace sc {

@@ -36,11 +36,13 @@ TEST(ParkingStudentRollout, ScoreAveragesEpisodes) {
                                                sample_parking_scenario(rng, LotVariant::Classic)};
   const ParkingScore score = score_parking_student(policy, scenarios);
   const double expected = (parking_episode_score(rollout_parking_student(policy, scenarios[0])) +
-                           parking_episode_score(rollout_parking_student(policy, scenarios[1]))) / 2.0;
+                           parking_episode_score(rollout_parking_student(policy, scenarios[1]))) /
+                          2.0;
   EXPECT_DOUBLE_EQ(score.mean_reward, expected);
   EXPECT_LE(score.mean_reward, 0.0);
   const double steps = (parking_mean_step_reward(rollout_parking_student(policy, scenarios[0])) +
-                        parking_mean_step_reward(rollout_parking_student(policy, scenarios[1]))) / 2.0;
+                        parking_mean_step_reward(rollout_parking_student(policy, scenarios[1]))) /
+                       2.0;
   EXPECT_DOUBLE_EQ(score.step_reward, steps);
 }
 

@@ -1,6 +1,6 @@
 // The synthetic-student protocol end to end on a small parking kit (16 expert demos, time-heuristic skills,
-// 12 student drives, tiny networks and epochs): seconds, not minutes. Checks determinism and the protocol's invariants, not
-// the paper's findings (docs/students.md has the full run).
+// 12 student drives, tiny networks and epochs): seconds, not minutes. Checks determinism and the protocol's invariants,
+// not the paper's findings (docs/students.md has the full run).
 #include "teaching/students/student_experiment.hpp"
 
 #include <cmath>
@@ -135,7 +135,8 @@ TEST(StudentExperiment, RehearsalAddsTheStudentsOwnPairsEquallyToEveryCondition)
     for (std::size_t k = 0; k < 3; ++k)
       for (std::size_t cond = 0; cond < 3; ++cond) {
         const ConditionResult& r = with.students[s].conditions[cond];
-        EXPECT_EQ(r.pairs[k], without.students[s].conditions[cond].pairs[k]) << "the condition's own material is unchanged";
+        EXPECT_EQ(r.pairs[k], without.students[s].conditions[cond].pairs[k])
+            << "the condition's own material is unchanged";
         EXPECT_EQ(r.rehearsal_pairs[k], std::lround(1.5 * r.pairs[k]));
         EXPECT_EQ(without.students[s].conditions[cond].rehearsal_pairs[k], 0);
       }

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <stdexcept>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace sc::test {
@@ -78,9 +78,10 @@ ImageDifference compare_images(const RgbaImage& actual, const RgbaImage& expecte
     return ::testing::AssertionSuccess() << "golden updated: " << golden.string();
   }
   if (!std::filesystem::exists(golden))
-    return ::testing::AssertionFailure() << "golden image " << golden.string()
-                                         << " does not exist; create it with SKILLCOACH_UPDATE_GOLDENS=1 ctest -R <test>"
-                                            " and review the PNG before committing it";
+    return ::testing::AssertionFailure()
+           << "golden image " << golden.string()
+           << " does not exist; create it with SKILLCOACH_UPDATE_GOLDENS=1 ctest -R <test>"
+              " and review the PNG before committing it";
   const RgbaImage expected = read_png(golden);
   const ImageDifference diff = compare_images(actual, expected, tolerance.channel);
   // The measured residual, passing or not (`ctest -L render -V | grep residual`: docs/development.md).
@@ -100,8 +101,8 @@ ImageDifference compare_images(const RgbaImage& actual, const RgbaImage& expecte
     const auto diff_file = out / (flat_name(name) + ".diff.png");
     write_png(diff_file, diff.highlight);
     message << diff.differing_pixels << " of " << diff.total_pixels << " pixels (limit " << tolerance.max_pixels
-            << ") differ by more than " << tolerance.channel
-            << " (max channel difference " << diff.max_channel_difference << "); diff: " << diff_file.string();
+            << ") differ by more than " << tolerance.channel << " (max channel difference "
+            << diff.max_channel_difference << "); diff: " << diff_file.string();
   }
   message << "; actual: " << actual_file.string();
   std::printf("[golden] actual: %s\n", actual_file.c_str());

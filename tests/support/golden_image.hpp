@@ -31,7 +31,7 @@ struct ImageDifference {
 };
 
 struct GoldenTolerance {
-  int channel = 2;             // a pixel differs if any channel differs by more than this
+  int channel = 2;              // a pixel differs if any channel differs by more than this
   std::size_t max_pixels = 24;  // fail if more pixels than this differ
 };
 

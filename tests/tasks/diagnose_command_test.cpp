@@ -29,7 +29,8 @@ struct Result {
 
 Result run(const std::string& arguments, const std::string& name) {
   const auto log = scratch(name + ".log");
-  const std::string command = std::string(std::getenv("SKILLCOACH_BINARY")) + " " + arguments + " > " + log.string() + " 2>&1";
+  const std::string command =
+      std::string(std::getenv("SKILLCOACH_BINARY")) + " " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream text;
@@ -44,7 +45,8 @@ TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
   write_json_file(trial, doc);
   const auto out = scratch("writing.json");
   const auto png = scratch("writing_png");
-  const Result r = run("diagnose --task writing --png " + png.string() + " --out " + out.string() + " " + trial.string(), "writing");
+  const Result r =
+      run("diagnose --task writing --png " + png.string() + " --out " + out.string() + " " + trial.string(), "writing");
   ASSERT_EQ(r.status, 0) << r.output;
   const Json d = read_json_file(out);
   EXPECT_EQ(d.at("task"), "writing");
@@ -63,7 +65,8 @@ TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
 }
 
 TEST(DiagnoseCommand, ParkingLearnerOnAPoolScenarioIsComparedWithThatExpert) {
-  const Json pool = read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
+  const Json pool =
+      read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
   Json learner = pool.at("trials")[4];
   learner.erase("states");
   learner.erase("rewards");
@@ -87,7 +90,8 @@ TEST(DiagnoseCommand, ParkingLearnerOnAPoolScenarioIsComparedWithThatExpert) {
 }
 
 TEST(DiagnoseCommand, QualityAwareExpertiseAddsToAlg2AndEveryTargetSaysWhyAndWhere) {
-  const Json pool = read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
+  const Json pool =
+      read_json_file(std::filesystem::path(std::getenv("SKILLCOACH_ASSET_DIR")) / "experts" / "parking_pool.json");
   Json learner = pool.at("trials")[4];
   for (const char* key : {"states", "rewards", "success"}) learner.erase(key);
   Json& actions = learner.at("actions");
@@ -96,7 +100,8 @@ TEST(DiagnoseCommand, QualityAwareExpertiseAddsToAlg2AndEveryTargetSaysWhyAndWhe
   write_json_file(trial, learner);
   const auto alg2 = scratch("alg2.json"), quality = scratch("quality.json");
   ASSERT_EQ(run("diagnose --task parking --out " + alg2.string() + " " + trial.string(), "alg2").status, 0);
-  const Result r = run("diagnose --task parking --expertise quality-aware --out " + quality.string() + " " + trial.string(), "quality");
+  const Result r = run(
+      "diagnose --task parking --expertise quality-aware --out " + quality.string() + " " + trial.string(), "quality");
   ASSERT_EQ(r.status, 0) << r.output;
   const Json a = read_json_file(alg2), q = read_json_file(quality);
   EXPECT_EQ(a.at("expertise_mode"), "alg2");
@@ -137,11 +142,13 @@ TEST(DiagnoseCommand, ABadFileAmongSeveralIsNamedWithItsFullJsonPath) {
   doc["actions"][1][0] = 1.5;
   const auto bad_action = scratch("bad_action.json");
   write_json_file(bad_action, doc);
-  const Result r = run("diagnose --task parking " + good.string() + " " + bad_action.string() + " " + good.string(),
-                       "bad_action");
+  const Result r =
+      run("diagnose --task parking " + good.string() + " " + bad_action.string() + " " + good.string(), "bad_action");
   EXPECT_EQ(r.status, 2) << r.output;
-  EXPECT_NE(r.output.find("skillcoach: error: " + bad_action.string() + ": $.actions[1][0]: value 1.5 is outside [-1, 1]"),
-            std::string::npos) << r.output;
+  EXPECT_NE(
+      r.output.find("skillcoach: error: " + bad_action.string() + ": $.actions[1][0]: value 1.5 is outside [-1, 1]"),
+      std::string::npos)
+      << r.output;
   doc = read_json_file(good);
   doc["scenario"]["heading0"] = "north";
   const auto bad_scenario = scratch("bad_scenario.json");

@@ -19,11 +19,14 @@ const ParkingKit& kit() {
   return k;
 }
 
-ParkingTrial expert(int i) { return parse_parking_trial(kit().expert_pool()[static_cast<std::size_t>(i)].trial, "pool"); }
+ParkingTrial expert(int i) {
+  return parse_parking_trial(kit().expert_pool()[static_cast<std::size_t>(i)].trial, "pool");
+}
 
 // Slice k (of the time heuristic's 3) of expert e as a drill segment.
 DrillSegment slice(int e, int k) {
-  const SkillSegment s = kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
+  const SkillSegment s =
+      kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
   return {s.skill, e, s.begin, s.end};
 }
 
@@ -69,7 +72,8 @@ TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsG
                                          : d.final_state;
       return 5.0 * std::hypot(row[2], row[3]);
     };
-    const double step = std::hypot(d.ghost_path[i][0] - d.ghost_path[i - 1][0], d.ghost_path[i][1] - d.ghost_path[i - 1][1]);
+    const double step =
+        std::hypot(d.ghost_path[i][0] - d.ghost_path[i - 1][0], d.ghost_path[i][1] - d.ghost_path[i - 1][1]);
     EXPECT_LE(step, 0.2 * std::max(speed(i - 1), speed(i)) + 1e-3) << "step " << i;
   }
   // The drill trial, replayed in a fresh ParkingSim, gives exactly the ghost states and the drill's score.

@@ -91,7 +91,8 @@ TEST(ParkingPool, AFileOfTheOtherRegionIsNotUsed) {
     parse_parking_pool(read_json_file(file), "corner_pool.json", ParkingPoolOptions{2, 5});
     FAIL() << "a study-corner pool was accepted as the whole lot's";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("pool of the study-corner, whole-lot expected"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pool of the study-corner, whole-lot expected"), std::string::npos)
+        << e.what();
   }
   // Files written before regions existed hold whole-lot pools.
   Json old = parking_pool_json(ParkingPoolOptions{1, 5}, generate_parking_pool(ParkingPoolOptions{1, 5}));

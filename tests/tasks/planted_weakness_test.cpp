@@ -106,7 +106,8 @@ TEST(PlantedWeakness, ParkingStudentWhoNeverReversesIsWeakestAtReversing) {
   int reversing_scenarios = 0;
   for (int i : s.pretest) {
     const ParkingTrial& expert = s.pool[static_cast<std::size_t>(i)];
-    reversing_scenarios += std::any_of(expert.actions.begin(), expert.actions.end(), [](const auto& a) { return a[0] < 0; });
+    reversing_scenarios +=
+        std::any_of(expert.actions.begin(), expert.actions.end(), [](const auto& a) { return a[0] < 0; });
     trials.push_back(parking_trial_to_json(never_reversing_student(expert)));
   }
   const Diagnosis d = diagnose_trials(*s.kit, trials, 0);
@@ -164,7 +165,8 @@ writing::WritingTrial distorted_student(const writing::WordTrajectory& gold, cha
   for (int k = 0; k < n; ++k) {
     if (gold.word[static_cast<std::size_t>(k)] != symbol) continue;
     const int a = gold.character_starts[static_cast<std::size_t>(k)];
-    const int b = k + 1 < n ? gold.character_starts[static_cast<std::size_t>(k + 1)] : static_cast<int>(gold.steps.size());
+    const int b =
+        k + 1 < n ? gold.character_starts[static_cast<std::size_t>(k + 1)] : static_cast<int>(gold.steps.size());
     const writing::TracePoint p0 = points[static_cast<std::size_t>(a)];
     const writing::TracePoint p1 = points[static_cast<std::size_t>(b)];
     for (int i = a + 1; i < b; ++i) {
@@ -227,7 +229,8 @@ TEST(PlantedWeakness, WritingStudentWithADistortedCharacterIsWeakestAtItsSkills)
   const auto& places = s.kit->skill_places();
   auto of_symbol = [&](int m) { return places[static_cast<std::size_t>(m)].share_of(kDistorted) >= 0.5; };
   for (int m : d.expertise.ranking)
-    std::printf("  skill %2d: %.0f %% of its expert steps in '%c'\n", m, 100 * places[static_cast<std::size_t>(m)].share_of(kDistorted), kDistorted);
+    std::printf("  skill %2d: %.0f %% of its expert steps in '%c'\n", m,
+                100 * places[static_cast<std::size_t>(m)].share_of(kDistorted), kDistorted);
   std::vector<int> seen;
   for (int m : d.expertise.ranking)
     if (of_symbol(m)) seen.push_back(m);

@@ -23,7 +23,7 @@ TEST(WritingBoundaryScore, ToleranceIsFivePercentOfEachWordsLength) {
   // 1000 steps -> +-50; 200 steps -> +-10.
   const std::vector<SkillDemo> demos = {word_demo(1000, {300, 600}), word_demo(200, {100})};
   const std::vector<Segmentation> predicted = {segments_of({{0, 350}, {1, 251}, {2, 399}}),  // 350 ok, 601 ok
-                                               segments_of({{0, 111}, {1, 89}})};             // 111 misses 100
+                                               segments_of({{0, 111}, {1, 89}})};            // 111 misses 100
   const BoundaryScore s = writing_boundary_score(predicted, demos);
   EXPECT_EQ(s.true_positives, 2);
   EXPECT_EQ(s.false_positives, 1);

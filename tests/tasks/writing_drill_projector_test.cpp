@@ -13,12 +13,14 @@ namespace sc {
 namespace {
 
 const WritingKit& kit() {
-  static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "", WritingKitOptions{{}, writing::AlphabetKind::Classic, 5, 9});
+  static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "",
+                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 5, 9});
   return k;
 }
 
 DrillSegment slice(int e, int k) {
-  const SkillSegment s = kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
+  const SkillSegment s =
+      kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
   return {s.skill, e, s.begin, s.end};
 }
 
@@ -70,7 +72,10 @@ TEST(WritingDrillProjector, PathLeavingTheCanvasIsShiftedInsideAndPenFlagsAreKep
   e.action_dim = 3;
   for (int t = 0; t < 100; ++t) {
     const bool lifted = t >= 40 && t < 60;
-    e.states.insert(e.states.end(), {480.0f + (t < 40 ? t : t < 60 ? 40.0f : t - 20.0f), t < 40 ? 5.0f : 5.0f - (std::min(t, 60) - 40), static_cast<float>(t)});
+    e.states.insert(e.states.end(), {480.0f + (t < 40   ? t
+                                               : t < 60 ? 40.0f
+                                                        : t - 20.0f),
+                                     t < 40 ? 5.0f : 5.0f - (std::min(t, 60) - 40), static_cast<float>(t)});
     e.actions.insert(e.actions.end(), {lifted ? 0.0f : 1.0f, lifted ? -1.0f : 0.0f, lifted ? 0.0f : 1.0f});
   }
   const WritingDrillProjector projector({e});

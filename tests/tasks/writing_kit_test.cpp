@@ -12,7 +12,8 @@ namespace sc {
 namespace {
 
 const WritingKit& kit() {
-  static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "", WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
+  static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "",
+                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
   return k;
 }
 
@@ -26,7 +27,8 @@ TEST(WritingKit, PoolHoldsDistinctGoldWordsSegmentedTwice) {
     EXPECT_EQ(d.trial.at("source"), "expert");
     for (std::size_t j = 0; j < i; ++j) EXPECT_NE(d.scenario, kit().expert_pool()[j].scenario);
   }
-  const WritingKit again(std::make_shared<TimeHeuristicExtractor>(8), "", WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
+  const WritingKit again(std::make_shared<TimeHeuristicExtractor>(8), "",
+                         WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(again.expert_pool()[i].trial, kit().expert_pool()[i].trial);
 }
 
@@ -78,10 +80,11 @@ TEST(WritingKit, SkillWordsNameCharactersFromTheTrueBoundaries) {
   // Two skills drawing '-' (the second on more words): distinct names, the more used first; unused skills
   // keep their words.
   WordCharacters dashes{"-", {0}, 20};
-  const auto two = writing_skill_places({dashes, dashes, dashes}, {Segmentation{{{0, 0, 20}}}, Segmentation{{{1, 0, 20}}},
-                                                                    Segmentation{{{1, 0, 20}}}}, 3);
-  EXPECT_EQ(describe_writing_places(two),
-            (std::vector<std::string>{"the connector '-', form 2 of 2", "the connector '-', form 1 of 2", "unused skill"}));
+  const auto two =
+      writing_skill_places({dashes, dashes, dashes},
+                           {Segmentation{{{0, 0, 20}}}, Segmentation{{{1, 0, 20}}}, Segmentation{{{1, 0, 20}}}}, 3);
+  EXPECT_EQ(describe_writing_places(two), (std::vector<std::string>{"the connector '-', form 2 of 2",
+                                                                    "the connector '-', form 1 of 2", "unused skill"}));
   EXPECT_EQ(describe_writing_place(WritingSkillPlace{}), "unused skill");
   for (int m = 0; m < 8; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
 }

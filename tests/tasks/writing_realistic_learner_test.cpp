@@ -98,7 +98,8 @@ TEST(WritingRealisticLearner, SameSeedSameTraceAndInfilledStartsPointAtTheSamePl
   const std::vector<int> starts = infilled_symbol_starts(a.trace, a.symbol_starts);
   const writing::TimedTrace infilled = writing::infill_trace(a.trace);
   for (std::size_t k = 0; k < starts.size(); ++k)
-    EXPECT_EQ(infilled.points.at(static_cast<std::size_t>(starts[k])), a.trace.points[static_cast<std::size_t>(a.symbol_starts[k])]);
+    EXPECT_EQ(infilled.points.at(static_cast<std::size_t>(starts[k])),
+              a.trace.points[static_cast<std::size_t>(a.symbol_starts[k])]);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace {
 
 TEST(WritingRobustness, MajoritySkillCountsStepsInTheRange) {
   const Segmentation s{{{3, 0, 10}, {5, 10, 14}, {3, 14, 20}}};
-  EXPECT_EQ(majority_skill(s, 8, 15), 5);   // 4 steps of 5, 3 of 3
+  EXPECT_EQ(majority_skill(s, 8, 15), 5);  // 4 steps of 5, 3 of 3
   EXPECT_EQ(majority_skill(s, 0, 20), 3);
   EXPECT_EQ(majority_skill(s, 20, 20), -1);
 }

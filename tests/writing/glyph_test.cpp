@@ -21,11 +21,10 @@ struct Expected {
 };
 
 // reference-facts §2.4 table (printed with 2-3 decimals, hence the tolerances below).
-constexpr Expected kTable[] = {
-    {'a', 39, 724, 95.918, 0.332, -44.57, 0.33}, {'b', 25, 409, 100.0, 0.854, -25.03, 32.62},
-    {'c', 53, 635, 98.611, 0.980, -69.85, 0.98}, {'t', 42, 640, 100.0, 0.631, -59.11, 4.53},
-    {'e', 49, 521, 100.0, 0.190, -83.42, 0.19},  {'-', 0, 20, 20.0, 0.0, 0.0, 0.0},
-    {'^', 0, 40, 40.0, 0.0, -40.0, 0.0}};
+constexpr Expected kTable[] = {{'a', 39, 724, 95.918, 0.332, -44.57, 0.33}, {'b', 25, 409, 100.0, 0.854, -25.03, 32.62},
+                               {'c', 53, 635, 98.611, 0.980, -69.85, 0.98}, {'t', 42, 640, 100.0, 0.631, -59.11, 4.53},
+                               {'e', 49, 521, 100.0, 0.190, -83.42, 0.19},  {'-', 0, 20, 20.0, 0.0, 0.0, 0.0},
+                               {'^', 0, 40, 40.0, 0.0, -40.0, 0.0}};
 
 struct Summary {
   double dx = 0, dy = 0, y_min = 0, y_max = 0;
@@ -83,7 +82,8 @@ TEST(ClassicGlyphs, LeadInAndInfillRules) {
     EXPECT_GT(drift, 0.0);
     EXPECT_LE(drift, 1.0);
     // The stroke is exactly 100 px wide.
-    auto [lo, hi] = std::minmax_element(pts.points.begin(), pts.points.end(), [](auto& a, auto& b) { return a.x < b.x; });
+    auto [lo, hi] =
+        std::minmax_element(pts.points.begin(), pts.points.end(), [](auto& a, auto& b) { return a.x < b.x; });
     EXPECT_NEAR(hi->x - lo->x, 100.0, 1e-9);
   }
 }
@@ -137,14 +137,14 @@ TEST(BalineseGlyph, MultiStrokeHasPenUpMovesAndFitsTheBox) {
     if (s.pen && !previous_pen) ++pen_runs;
     previous_pen = s.pen;
   }
-  EXPECT_EQ(pen_runs, 9);                 // one inked run per stroke
-  EXPECT_FALSE(g.steps.front().pen);      // enters lifted
-  EXPECT_FALSE(g.steps.back().pen);       // leaves lifted, back on the baseline
+  EXPECT_EQ(pen_runs, 9);             // one inked run per stroke
+  EXPECT_FALSE(g.steps.front().pen);  // enters lifted
+  EXPECT_FALSE(g.steps.back().pen);   // leaves lifted, back on the baseline
   EXPECT_NEAR(y, 0.0, 1e-9);
-  EXPECT_NEAR(x, max_x, 1.0);             // exit at the right edge of the ink
+  EXPECT_NEAR(x, max_x, 1.0);  // exit at the right edge of the ink
   EXPECT_LE(std::max(max_x - min_x, max_y - min_y), 100.0 + 1e-9);
   EXPECT_GE(std::max(max_x - min_x, max_y - min_y), 99.0);
-  EXPECT_LE(max_y, 1e-9);                 // ink sits on or above the baseline
+  EXPECT_LE(max_y, 1e-9);  // ink sits on or above the baseline
 }
 
 TEST(BalineseGlyph, DotStrokeIsOneZeroLengthInkedStep) {

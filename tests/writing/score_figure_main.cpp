@@ -22,7 +22,8 @@ struct Rgb {
 
 class Image {
  public:
-  Image(int w, int h, double x0, double y0, double zoom) : w_(w), h_(h), x0_(x0), y0_(y0), zoom_(zoom), px_(w * h * 3, 255) {}
+  Image(int w, int h, double x0, double y0, double zoom)
+      : w_(w), h_(h), x0_(x0), y0_(y0), zoom_(zoom), px_(w * h * 3, 255) {}
   void set(int X, int Y, Rgb c, double alpha = 1.0) {
     if (X < 0 || Y < 0 || X >= w_ || Y >= h_) return;
     unsigned char* p = &px_[static_cast<std::size_t>((Y * w_ + X) * 3)];
@@ -51,7 +52,8 @@ class Image {
 };
 
 // Distance from each output pixel to the nearest gold sample, stamped locally around every sample.
-std::vector<double> distance_field(const Image& img, const std::vector<Point2>& gold, double zoom, double x0, double y0, double reach) {
+std::vector<double> distance_field(const Image& img, const std::vector<Point2>& gold, double zoom, double x0, double y0,
+                                   double reach) {
   std::vector<double> d(static_cast<std::size_t>(img.width() * img.height()), INFINITY);
   for (const auto& g : gold) {
     const int cx = static_cast<int>((g.x - x0) * zoom), cy = static_cast<int>((g.y - y0) * zoom);
@@ -73,9 +75,9 @@ double credit(double d, const sc::writing::WritingScoreParams& p) {
 }
 
 Rgb credit_colour(double c) {
-  if (c >= 1.0) return {30, 150, 60};   // full credit: green
-  if (c <= 0.0) return {215, 40, 40};   // no credit: red
-  return {240, 150, 20};                // partial: orange
+  if (c >= 1.0) return {30, 150, 60};  // full credit: green
+  if (c <= 0.0) return {215, 40, 40};  // no credit: red
+  return {240, 150, 20};               // partial: orange
 }
 
 double nearest(const Point2& q, const std::vector<Point2>& set) {
@@ -103,7 +105,8 @@ int main(int argc, char** argv) {
     learner.push_back({gold[i].x + 1.2 * std::sin(0.05 * static_cast<double>(i)), gold[i].y + drift, true});
   }
   const auto score = sc::writing::score_writing(gold, learner, params);
-  std::printf("score %.4f recall %.4f precision %.4f f %.4f\n", score.score, score.recall, score.precision, score.f_measure);
+  std::printf("score %.4f recall %.4f precision %.4f f %.4f\n", score.score, score.recall, score.precision,
+              score.f_measure);
 
   // The canvas region x in [-5, 355], y in [55, 200] (the whole word), 2.5x.
   const double zoom = 2.5, x0 = -5.0, y0 = 55.0;

@@ -52,8 +52,7 @@ TEST(StepData, LearnerTraceHasNoBoundaries) {
   EXPECT_EQ(data.actions, (std::vector<float>{1, 0, 0, -1}));
   EXPECT_EQ(data.states[13 + 2], 1.0f);  // timer of state 1
   EXPECT_EQ(data.states[3], 0.0f);       // goal[0] = 'a'
-  EXPECT_EQ(trace_step_data(trace, AlphabetKind::Balinese, "A").actions,
-            (std::vector<float>{1, 0, 1, 0, -1, 1}));
+  EXPECT_EQ(trace_step_data(trace, AlphabetKind::Balinese, "A").actions, (std::vector<float>{1, 0, 1, 0, -1, 1}));
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ TEST(StrokeFile, ReadsTheShippedFiles) {
 }
 
 TEST(StrokeFile, CorruptFilesNameFileAndLine) {
-  EXPECT_EQ(error_of("START\n1,2,0\n1,abc,3\nBREAK\n"), "x.txt: line 3: bad number \"abc\" (expected a finite decimal)");
+  EXPECT_EQ(error_of("START\n1,2,0\n1,abc,3\nBREAK\n"),
+            "x.txt: line 3: bad number \"abc\" (expected a finite decimal)");
   EXPECT_EQ(error_of("START\n1,nan,0\nBREAK\n"), "x.txt: line 2: bad number \"nan\" (expected a finite decimal)");
   EXPECT_EQ(error_of("START\ninf,1,0\nBREAK\n"), "x.txt: line 2: bad number \"inf\" (expected a finite decimal)");
   EXPECT_EQ(error_of("1,2,3\nBREAK\n"), "x.txt: line 1: data before START");
@@ -58,9 +59,7 @@ TEST(StrokeFile, CorruptFilesNameFileAndLine) {
   EXPECT_EQ(error_of("START\n1.2.3,2,3\nBREAK\n"), "x.txt: line 2: bad number \"1.2.3\" (expected a finite decimal)");
 }
 
-TEST(StrokeFile, MissingFile) {
-  EXPECT_THROW(read_stroke_file("/nonexistent/0000_00.txt"), InputError);
-}
+TEST(StrokeFile, MissingFile) { EXPECT_THROW(read_stroke_file("/nonexistent/0000_00.txt"), InputError); }
 
 }  // namespace
 }  // namespace sc::writing

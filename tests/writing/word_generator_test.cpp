@@ -60,7 +60,8 @@ TEST(ClassicWordGenerator, SymbolTotalsMatchTheReferenceProportions) {
   for (const auto& w : words)
     for (char c : w) counts[c] += 1;
   const double total = 8.0 * static_cast<double>(words.size());
-  const std::map<char, double> expected{{'-', 9217}, {'a', 2000}, {'^', 1276}, {'t', 1258}, {'e', 913}, {'b', 833}, {'c', 503}};
+  const std::map<char, double> expected{{'-', 9217}, {'a', 2000}, {'^', 1276}, {'t', 1258},
+                                        {'e', 913},  {'b', 833},  {'c', 503}};
   for (const auto& [c, ref] : expected) EXPECT_NEAR(counts[c] / total, ref / 16000.0, 0.01) << c;
   // 'a' appears exactly once in every word (every sixgram has one 'a', bigrams none).
   EXPECT_EQ(counts['a'], static_cast<double>(words.size()));

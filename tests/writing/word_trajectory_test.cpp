@@ -51,7 +51,8 @@ TEST_F(ClassicWords, AllTrainingWordsFitTheCanvasAsInTheReference) {
   double lowest_reach = 1e9, highest_reach = -1e9, min_y = 1e9, max_y = -1e9;
   for (const auto& six : classic_sixgrams())
     for (const auto& two : classic_bigrams())
-      for (const std::string& word : {std::string(six.text) + std::string(two.text), std::string(two.text) + std::string(six.text)}) {
+      for (const std::string& word :
+           {std::string(six.text) + std::string(two.text), std::string(two.text) + std::string(six.text)}) {
         const Extent e = extent_of(build_word_trajectory(*glyphs_, word));
         lowest_reach = std::min(lowest_reach, e.max_x), highest_reach = std::max(highest_reach, e.max_x);
         min_y = std::min(min_y, e.min_y), max_y = std::max(max_y, e.max_y);

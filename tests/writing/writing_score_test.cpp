@@ -25,7 +25,8 @@ std::vector<TracePoint> sampled_along(const std::vector<TracePoint>& path, doubl
     const double len = std::hypot(path[i].x - path[i - 1].x, path[i].y - path[i - 1].y);
     while (next <= walked + len) {
       const double f = (next - walked) / len;
-      out.push_back({path[i - 1].x + f * (path[i].x - path[i - 1].x), path[i - 1].y + f * (path[i].y - path[i - 1].y), true});
+      out.push_back(
+          {path[i - 1].x + f * (path[i].x - path[i - 1].x), path[i - 1].y + f * (path[i].y - path[i - 1].y), true});
       next += step;
     }
     walked += len;
@@ -81,7 +82,8 @@ TEST(WritingScore, ShiftedByTwentyPixelsScoresMuchLower) {
 TEST(WritingScore, HalfAWordScoresAboutHalf) {
   const auto gold = gold_points("b-a-t-^-");
   for (double fraction : {0.25, 0.5, 0.75}) {
-    const std::vector<TracePoint> part(gold.begin(), gold.begin() + static_cast<std::ptrdiff_t>(fraction * gold.size()));
+    const std::vector<TracePoint> part(gold.begin(),
+                                       gold.begin() + static_cast<std::ptrdiff_t>(fraction * gold.size()));
     const auto s = score_writing(gold, part);
     report(("first " + std::to_string(fraction)).c_str(), s);
     EXPECT_NEAR(s.precision, 1.0, 1e-12);
@@ -97,7 +99,8 @@ TEST(WritingScore, RandomScribblesScoreNearMinusOne) {
   const int trials = 8;
   for (int trial = 0; trial < trials; ++trial) {
     std::vector<TracePoint> scribble;
-    for (int i = 0; i < 40; ++i) scribble.push_back({rng.uniform(0, kCanvasWidth), rng.uniform(0, kCanvasHeight), true});
+    for (int i = 0; i < 40; ++i)
+      scribble.push_back({rng.uniform(0, kCanvasWidth), rng.uniform(0, kCanvasHeight), true});
     const auto s = score_writing(gold, scribble);
     report("random scribble", s);
     EXPECT_LT(s.score, -0.8);
@@ -108,7 +111,8 @@ TEST(WritingScore, RandomScribblesScoreNearMinusOne) {
   std::vector<TracePoint> walk{{250, 150, true}};
   for (int i = 0; i < 2000; ++i) {
     const double a = rng.uniform(0, 2 * M_PI);
-    walk.push_back({std::clamp(walk.back().x + std::cos(a), 0.0, 500.0), std::clamp(walk.back().y + std::sin(a), 0.0, 300.0), true});
+    walk.push_back({std::clamp(walk.back().x + std::cos(a), 0.0, 500.0),
+                    std::clamp(walk.back().y + std::sin(a), 0.0, 300.0), true});
   }
   const auto s = score_writing(gold, walk);
   report("random walk", s);
@@ -173,7 +177,8 @@ TEST(WritingScore, PenUpMovesAreNotInk) {
 
 TEST(ResampleInk, SpacingRunsAndDots) {
   double length = 0;
-  const auto pts = resample_ink({{0, 0, true}, {10, 0, true}, {20, 0, false}, {20, 0, true}, {25, 0, false}}, 1.0, &length);
+  const auto pts =
+      resample_ink({{0, 0, true}, {10, 0, true}, {20, 0, false}, {20, 0, true}, {25, 0, false}}, 1.0, &length);
   EXPECT_DOUBLE_EQ(length, 10.0);
   ASSERT_EQ(pts.size(), 11u + 1u);  // 0..10, then the dot at (20, 0)
   EXPECT_EQ(pts.back(), (Point2{20, 0}));

@@ -96,11 +96,16 @@ TEST(WritingTrialFile, MalformedFilesGiveOneLineWithPathAndProblem) {
   EXPECT_EQ(error_of(R"({"task": "writing", "scenario": {"word": "a", "alphabet": "latin"}, "points": []})"),
             "t.json: $.scenario.alphabet: unknown alphabet \"latin\" (expected \"classic\" or \"balinese\")");
   EXPECT_EQ(error_of(R"({"task": "writing", "scenario": {"word": "a", "drawers": {"a": 2}}, "points": []})"),
-            "t.json: $.scenario.drawers: drawer choices need \"alphabet\": \"balinese\" (classic always uses the paper's drawers)");
-  EXPECT_EQ(error_of(R"({"task": "writing", "scenario": {"word": "A", "alphabet": "balinese", "drawers": {"A": 0}}, "points": []})"),
-            "t.json: $.scenario.drawers.A: drawer must be in 1..15");
-  EXPECT_EQ(error_of(R"({"task": "writing", "scenario": {"word": "A", "alphabet": "balinese", "drawers": {"Z": 1}}, "points": []})"),
-            "t.json: $.scenario.drawers.Z: \"Z\" is not a character of the balinese alphabet (A..X)");
+            "t.json: $.scenario.drawers: drawer choices need \"alphabet\": \"balinese\" (classic always uses the "
+            "paper's drawers)");
+  EXPECT_EQ(
+      error_of(
+          R"({"task": "writing", "scenario": {"word": "A", "alphabet": "balinese", "drawers": {"A": 0}}, "points": []})"),
+      "t.json: $.scenario.drawers.A: drawer must be in 1..15");
+  EXPECT_EQ(
+      error_of(
+          R"({"task": "writing", "scenario": {"word": "A", "alphabet": "balinese", "drawers": {"Z": 1}}, "points": []})"),
+      "t.json: $.scenario.drawers.Z: \"Z\" is not a character of the balinese alphabet (A..X)");
   EXPECT_EQ(error_of(R"({"task": "writing", )" + kScenario + R"(, "points": [[1, 2], [3]]})"),
             "t.json: $.points[1]: expected [x, y] or [x, y, pen], got 1 elements");
   EXPECT_EQ(error_of(R"({"task": "writing", )" + kScenario + R"(, "points": [[1, "a"]]})"),
@@ -118,8 +123,9 @@ TEST(WritingTrialFile, MalformedFilesGiveOneLineWithPathAndProblem) {
   EXPECT_EQ(error_of(R"({"task": "writing", )" + kScenario + R"(, "points": [[1, 2]], "score": 0.5})"),
             "t.json: $.score: value 0.5 is outside [-1, 0]");
   // NaN and Infinity are not JSON: the parser rejects them with the position.
-  EXPECT_NE(error_of(R"({"task": "writing", )" + kScenario + R"(, "points": [[NaN, 2]]})").find("t.json: not valid JSON"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(R"({"task": "writing", )" + kScenario + R"(, "points": [[NaN, 2]]})").find("t.json: not valid JSON"),
+      std::string::npos);
   EXPECT_THROW(read_writing_trial(test_data("missing.json")), InputError);
 }
 

@@ -24,12 +24,11 @@ TEST(CanvasCamera, FitsTheCanvasWithItsMarginAndKeepsTheAspect) {
 }
 
 TEST(SplitInk, SeparatesInkRunsDotsAndPenUpHops) {
-  const std::vector<TracePoint> trace{
-      {0, 0, true},  {1, 0, true},  {2, 0, true},    // a run of two segments
-      {5, 5, false}, {8, 5, false},                  // a pen-up hop
-      {8, 5, true},                                  // a tap: ink that does not move
-      {9, 9, false},                                 // another hop
-      {10, 9, true}, {10, 9, true}, {11, 9, true}};  // a run with a repeated point
+  const std::vector<TracePoint> trace{{0, 0, true},  {1, 0, true},  {2, 0, true},    // a run of two segments
+                                      {5, 5, false}, {8, 5, false},                  // a pen-up hop
+                                      {8, 5, true},                                  // a tap: ink that does not move
+                                      {9, 9, false},                                 // another hop
+                                      {10, 9, true}, {10, 9, true}, {11, 9, true}};  // a run with a repeated point
   const InkPaths paths = split_ink(trace);
   ASSERT_EQ(paths.runs.size(), 2u);
   EXPECT_EQ(paths.runs[0].size(), 3u);

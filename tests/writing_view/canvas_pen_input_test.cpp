@@ -33,12 +33,12 @@ TEST(CanvasPenInput, PressDrawsMotionEventsAndFramesAreSampledReleaseEndsAClassi
   const Camera2D cam = camera();
   pen.feed({10.0, px(0, 150), false}, cam);  // hovering: not recorded, clock not started
   EXPECT_FALSE(pen.started());
-  pen.feed({10.1, px(0, 150), true}, cam);   // button-down event
+  pen.feed({10.1, px(0, 150), true}, cam);  // button-down event
   EXPECT_TRUE(pen.drawing());
-  pen.feed({10.11, px(3, 149), true}, cam);  // motion event
-  pen.feed({10.12, px(6, 148), true}, cam);  // motion event
-  pen.feed({10.13, px(6, 148), true}, cam);  // the frame's polled state: same place, not repeated
-  pen.feed({10.15, px(9, 150), false}, cam); // button-up event
+  pen.feed({10.11, px(3, 149), true}, cam);   // motion event
+  pen.feed({10.12, px(6, 148), true}, cam);   // motion event
+  pen.feed({10.13, px(6, 148), true}, cam);   // the frame's polled state: same place, not repeated
+  pen.feed({10.15, px(9, 150), false}, cam);  // button-up event
   EXPECT_TRUE(pen.ended());
   EXPECT_EQ(pen.end_reason(), TrialEnd::Released);
   const writing::TimedTrace raw = pen.raw();
@@ -129,12 +129,12 @@ TEST(CanvasPenInput, PauseStopsTheClockDropsSamplesAndLeavesThePausedSpanOutOfTh
   pen.feed({11.0, px(20, 150), true}, cam);
   pen.pause(12.0);
   EXPECT_TRUE(pen.paused());
-  pen.feed({20.0, px(200, 100), true}, cam);  // moved while paused: not ink
+  pen.feed({20.0, px(200, 100), true}, cam);   // moved while paused: not ink
   pen.feed({25.0, px(200, 100), false}, cam);  // released while paused: does not end the classic trial
-  pen.tick(100.0);                              // far past the 20 s limit in wall time
+  pen.tick(100.0);                             // far past the 20 s limit in wall time
   EXPECT_FALSE(pen.ended());
   EXPECT_DOUBLE_EQ(pen.seconds_left(100.0), 18.0);  // frozen at the pause
-  pen.resume(112.0);                                 // paused for 100 s
+  pen.resume(112.0);                                // paused for 100 s
   EXPECT_FALSE(pen.paused());
   EXPECT_DOUBLE_EQ(pen.seconds_left(113.0), 17.0);
   pen.feed({113.0, px(30, 150), true}, cam);  // the held stroke goes on

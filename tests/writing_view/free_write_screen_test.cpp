@@ -18,7 +18,8 @@ namespace {
 
 TEST(FreeWriteScreen, HeadlessScreenshotMatchesGoldenAndIsDeterministic) {
   const auto a = test_output_dir() / "free_write_a.png", b = test_output_dir() / "free_write_b.png";
-  const CommandResult first = run_skillcoach("screenshot --screen free_write --size 1280x720 --out '" + a.string() + "'");
+  const CommandResult first =
+      run_skillcoach("screenshot --screen free_write --size 1280x720 --out '" + a.string() + "'");
   ASSERT_EQ(first.exit_code, 0) << first.output;
   const CommandResult second =
       run_skillcoach("screenshot --screen free_write --size 1280x720 --frames 5 --out '" + b.string() + "'");

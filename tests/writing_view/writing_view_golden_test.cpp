@@ -76,7 +76,8 @@ TEST(WritingViewGolden, DrillRibbonWithStartDotAndArrows) {
   const auto end = static_cast<std::size_t>(gold.character_starts[3]);
   WritingScene scene;
   scene.guide = points;
-  scene.ribbon.assign(points.begin() + static_cast<std::ptrdiff_t>(begin), points.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+  scene.ribbon.assign(points.begin() + static_cast<std::ptrdiff_t>(begin),
+                      points.begin() + static_cast<std::ptrdiff_t>(end) + 1);
   scene.caption = "drill: I";
   EXPECT_TRUE(test::matches_golden(render_writing_scene_image(scene, kWidth, kHeight), "writing/drill_ribbon"));
 }

@@ -32,16 +32,16 @@ bool any_button(const GamepadSnapshot& pad) {
 
 DriveInput::DriveInput(DeviceChoice& device) : device_(device) {}
 
-void DriveInput::set_joystick_base(Vec2f centre, float radius) {
-  joystick_.set_base({centre.x, centre.y}, radius);
-}
+void DriveInput::set_joystick_base(Vec2f centre, float radius) { joystick_.set_base({centre.x, centre.y}, radius); }
 
 void DriveInput::update(const FrameInput& input) {
   pause_toggled_ = input.keys_pressed[SDL_SCANCODE_ESCAPE];
   update_gamepad(input);
   update_keyboard(input);
-  if (device_.kind == DeviceKind::mouse_joystick) update_mouse(input);
-  else if (joystick_.grabbed()) joystick_.release();
+  if (device_.kind == DeviceKind::mouse_joystick)
+    update_mouse(input);
+  else if (joystick_.grabbed())
+    joystick_.release();
   previous_pads_.clear();
   for (const auto& pad : input.gamepads) previous_pads_[pad.instance_id] = pad;
 }
@@ -105,18 +105,24 @@ void DriveInput::update_mouse(const FrameInput& input) {
   const input::Vec2 pointer{input.mouse_pixels.x, input.mouse_pixels.y};
   if (input.mouse_pressed[0] && input.mouse_inside && !input.ui_wants_mouse) joystick_.press(pointer);
   if (joystick_.grabbed()) {
-    if (!input.mouse_down[0] || input.mouse_released[0]) joystick_.release();
-    else if (input.mouse_inside) joystick_.drag(pointer);
+    if (!input.mouse_down[0] || input.mouse_released[0])
+      joystick_.release();
+    else if (input.mouse_inside)
+      joystick_.drag(pointer);
   }
 }
 
 input::DriveAction DriveInput::action() const {
   if (state_ != DriveInputState::ready) return {};
   switch (device_.kind) {
-    case DeviceKind::gamepad: return gamepad_action_;
-    case DeviceKind::keyboard: return keyboard_.action();
-    case DeviceKind::mouse_joystick: return joystick_.action();
-    case DeviceKind::mouse_pen: return {};
+    case DeviceKind::gamepad:
+      return gamepad_action_;
+    case DeviceKind::keyboard:
+      return keyboard_.action();
+    case DeviceKind::mouse_joystick:
+      return joystick_.action();
+    case DeviceKind::mouse_pen:
+      return {};
   }
   return {};
 }
@@ -125,8 +131,10 @@ std::string DriveInput::status() const {
   switch (state_) {
     case DriveInputState::device_lost:
       return "Gamepad \"" + lost_name_ + "\" disconnected - plug it back in or press a button on another pad.";
-    case DriveInputState::waiting_for_gamepad: return "Waiting for a gamepad - plug one in.";
-    case DriveInputState::ready: break;
+    case DriveInputState::waiting_for_gamepad:
+      return "Waiting for a gamepad - plug one in.";
+    case DriveInputState::ready:
+      break;
   }
   if (faulty_) return describe(device_) + " (sent invalid values: treated as neutral)";
   return describe(device_);

@@ -31,10 +31,10 @@ class DriveInput {
 
   input::DriveAction action() const;  // neutral unless ready
   DriveInputState state() const { return state_; }
-  std::string status() const;                  // one line for the panel
+  std::string status() const;                            // one line for the panel
   bool pause_toggled() const { return pause_toggled_; }  // Esc or the gamepad's Start, this update
   bool stick_held() const { return joystick_.grabbed(); }
-  bool faulty() const { return faulty_; }      // the gamepad sent invalid axis values (treated as neutral)
+  bool faulty() const { return faulty_; }  // the gamepad sent invalid axis values (treated as neutral)
 
  private:
   void update_gamepad(const FrameInput& input);
@@ -51,8 +51,8 @@ class DriveInput {
   bool faulty_ = false;
   bool pause_toggled_ = false;
   std::string lost_name_;
-  std::set<int> present_when_lost_;                  // pads connected when ours vanished
-  std::map<int, GamepadSnapshot> previous_pads_;     // last update's pads, for button edges
+  std::set<int> present_when_lost_;               // pads connected when ours vanished
+  std::map<int, GamepadSnapshot> previous_pads_;  // last update's pads, for button edges
 };
 
 }  // namespace sc

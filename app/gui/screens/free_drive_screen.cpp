@@ -54,8 +54,8 @@ class FreeDriveScreen final : public Screen {
   void draw(UiContext& ui) override {
     const float s = ui.ui_scale;
     const float panel = kPanelWidth * s;
-    const GaugeLayout gauges = layout_driving_gauges(
-        {static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 12.0f * s}, s);
+    const GaugeLayout gauges =
+        layout_driving_gauges({static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 12.0f * s}, s);
     // The lot above the gauge strip, so the gauges never hide a parked car or the goal.
     const PixelViewport viewport{panel, 0, std::max(1.0f, static_cast<float>(ui.width) - panel),
                                  std::max(1.0f, gauges.min.y - 8.0f * s)};
@@ -79,9 +79,7 @@ class FreeDriveScreen final : public Screen {
 
   void restart() { start(choice_); }
 
-  bool paused() const {
-    return user_paused_ || (!expert_driving_ && input_.state() != DriveInputState::ready);
-  }
+  bool paused() const { return user_paused_ || (!expert_driving_ && input_.state() != DriveInputState::ready); }
 
   void ensure_expert_plan() {
     if (expert_ && expert_->scenario == drive_->scenario()) return;
@@ -166,19 +164,24 @@ class FreeDriveScreen final : public Screen {
   void draw_live_readout(UiContext& ui) {
     const float s = ui.ui_scale;
     ImGui::PushFont(ui.fonts.bold);
-    if (drive_->succeeded()) ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.5f, 1), "Parked!");
-    else if (drive_->collided()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "Collision");
-    else if (drive_->done()) ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1), "Out of time");
-    else if (paused()) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1), "Paused");
-    else ImGui::TextUnformatted(expert_driving_ ? "The expert is driving" : "Driving");
+    if (drive_->succeeded())
+      ImGui::TextColored(ImVec4(0.45f, 0.9f, 0.5f, 1), "Parked!");
+    else if (drive_->collided())
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.45f, 1), "Collision");
+    else if (drive_->done())
+      ImGui::TextColored(ImVec4(1.0f, 0.7f, 0.3f, 1), "Out of time");
+    else if (paused())
+      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.4f, 1), "Paused");
+    else
+      ImGui::TextUnformatted(expert_driving_ ? "The expert is driving" : "Driving");
     ImGui::PopFont();
     const double reward = drive_->live_reward();
     ImGui::Text("Step %d / %d   (%.1f s)", drive_->control_steps(), parking::kHorizon, drive_->time_seconds());
     ImGui::Text("Reward %.3f   (parked above %.2f)", reward, parking::kSuccessReward);
     // Closeness to success: 0 at reward -1 or below, full at the success threshold.
     const float closeness = static_cast<float>(std::clamp((reward + 1.0) / (1.0 + parking::kSuccessReward), 0.0, 1.0));
-    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, is_success_reward(reward) ? ImVec4(0.35f, 0.8f, 0.45f, 1)
-                                                                            : ImVec4(0.18f, 0.44f, 0.85f, 1));
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram,
+                          is_success_reward(reward) ? ImVec4(0.35f, 0.8f, 0.45f, 1) : ImVec4(0.18f, 0.44f, 0.85f, 1));
     ImGui::ProgressBar(closeness, ImVec2(-1, 8.0f * s), "");
     ImGui::PopStyleColor();
     ImGui::Text("Return %.2f", drive_->total_return());
@@ -262,10 +265,14 @@ class FreeDriveScreen final : public Screen {
   const char* controls_hint() const {
     if (expert_driving_) return "The expert drives: watch its stick.\nEsc pauses.";
     switch (services_.device.kind) {
-      case DeviceKind::gamepad: return "Left stick: steer, up to drive, down to brake/reverse.\nStart pauses.";
-      case DeviceKind::keyboard: return "Arrows or WASD: up drives, down brakes/reverses.\nEsc pauses.";
-      case DeviceKind::mouse_joystick: return "Drag the stick at the right: up drives, down reverses.\nEsc pauses.";
-      case DeviceKind::mouse_pen: break;
+      case DeviceKind::gamepad:
+        return "Left stick: steer, up to drive, down to brake/reverse.\nStart pauses.";
+      case DeviceKind::keyboard:
+        return "Arrows or WASD: up drives, down brakes/reverses.\nEsc pauses.";
+      case DeviceKind::mouse_joystick:
+        return "Drag the stick at the right: up drives, down reverses.\nEsc pauses.";
+      case DeviceKind::mouse_pen:
+        break;
     }
     return "Esc pauses.";
   }

@@ -65,7 +65,8 @@ class FreeWriteScreen final : public Screen {
     writing_view::CanvasPenInput& pen = session_->pen();
     const bool may_press = !in.ui_wants_mouse;
     for (const MouseEvent& e : in.mouse_events) pen.feed({e.time_seconds, e.pixels, e.left_down}, camera, may_press);
-    if (in.mouse_inside || pen.drawing()) pen.feed({in.time_seconds, in.mouse_pixels, in.mouse_down[0]}, camera, may_press);
+    if (in.mouse_inside || pen.drawing())
+      pen.feed({in.time_seconds, in.mouse_pixels, in.mouse_down[0]}, camera, may_press);
     const bool enter = key_pressed(in, SDL_SCANCODE_RETURN) || key_pressed(in, SDL_SCANCODE_KP_ENTER);
     if (enter && !in.ui_wants_keyboard && pen.started()) pen.done(in.time_seconds);
     pen.tick(in.time_seconds);
@@ -80,12 +81,14 @@ class FreeWriteScreen final : public Screen {
     if (ghost_start_) {
       const double t = ui.time_seconds - *ghost_start_;
       const double duration = writing_view::ghost_pen_duration(scene.guide.size());
-      if (t <= duration + kGhostLingerSeconds) scene.ghost_pen = writing_view::ghost_pen_at(scene.guide, t);
-      else ghost_start_.reset();
+      if (t <= duration + kGhostLingerSeconds)
+        scene.ghost_pen = writing_view::ghost_pen_at(scene.guide, t);
+      else
+        ghost_start_.reset();
     }
     if (session_->result() && !session_->pen().started()) scene.score = session_->result()->score;
-    scene.caption = session_->scenario().word + "  \xc2\xb7  " +
-                    std::string(writing::alphabet_name(session_->scenario().alphabet));
+    scene.caption =
+        session_->scenario().word + "  \xc2\xb7  " + std::string(writing::alphabet_name(session_->scenario().alphabet));
     ui.renderer.set_camera(camera);
     writing_view::paint_writing_scene(ui.renderer, scene, look_);
     writing_view::draw_writing_scene_text(camera, scene, ui.fonts);
@@ -98,7 +101,8 @@ class FreeWriteScreen final : public Screen {
     const Vec2f corner = camera.world_to_pixel({492.0f, 8.0f});
     ImFont* font = ui.fonts.bold;
     const ImVec2 size = font->CalcTextSizeA(font->FontSize, 1e9f, 0.0f, text);
-    ImGui::GetBackgroundDrawList()->AddText(font, font->FontSize, ImVec2(std::floor(corner.x - size.x), std::floor(corner.y)),
+    ImGui::GetBackgroundDrawList()->AddText(font, font->FontSize,
+                                            ImVec2(std::floor(corner.x - size.x), std::floor(corner.y)),
                                             Color::hex(0x5a6477).packed_abgr(), text);
   }
 
@@ -141,7 +145,8 @@ class FreeWriteScreen final : public Screen {
     ImGui::PopFont();
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Write").x - 2.0f * ImGui::GetStyle().FramePadding.x -
                             ImGui::GetStyle().ItemSpacing.x);
-    const bool submitted = ImGui::InputText("##word", typed_.data(), typed_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    const bool submitted =
+        ImGui::InputText("##word", typed_.data(), typed_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if (ImGui::Button("Write") || submitted) {
       word_problem_ = session_->use_word(current, typed_.data());
@@ -165,8 +170,8 @@ class FreeWriteScreen final : public Screen {
   void draw_trial_controls(UiContext& ui) {
     writing_view::CanvasPenInput& pen = session_->pen();
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
-    ImGui::TextWrapped("%s Time limit: %.0f s from the first touch.", free_write_instructions(session_->scenario().alphabet),
-                       pen.rules().time_limit_seconds);
+    ImGui::TextWrapped("%s Time limit: %.0f s from the first touch.",
+                       free_write_instructions(session_->scenario().alphabet), pen.rules().time_limit_seconds);
     ImGui::PopStyleColor();
     const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
     ImGui::BeginDisabled(!pen.started());
@@ -178,8 +183,10 @@ class FreeWriteScreen final : public Screen {
     ImGui::EndDisabled();
     const bool playing = ghost_start_.has_value();
     if (ImGui::Button(playing ? "Hide the expert" : "Show the expert", ImVec2(-1, 0))) {
-      if (playing) ghost_start_.reset();
-      else ghost_start_ = ui.time_seconds;
+      if (playing)
+        ghost_start_.reset();
+      else
+        ghost_start_ = ui.time_seconds;
     }
   }
 

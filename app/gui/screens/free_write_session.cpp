@@ -69,8 +69,8 @@ void FreeWriteSession::write_scripted(const writing_view::ScriptedHand& hand) {
   // A steady hand at the expert's pace: `stride` gold steps between samples.
   for (std::size_t i = 0; i < trace.points.size(); ++i)
     trace.times.push_back(static_cast<double>(i * hand.stride) / writing::kExpertStepsPerSecond);
-  score(std::move(trace), writing::trial_ends_on_release(scenario_.alphabet) ? writing::TrialEnd::Released
-                                                                            : writing::TrialEnd::Done);
+  score(std::move(trace),
+        writing::trial_ends_on_release(scenario_.alphabet) ? writing::TrialEnd::Released : writing::TrialEnd::Done);
 }
 
 std::vector<writing::TracePoint> FreeWriteSession::ink() const {
@@ -81,16 +81,22 @@ std::vector<writing::TracePoint> FreeWriteSession::ink() const {
 const char* free_write_instructions(writing::AlphabetKind kind) {
   return kind == writing::AlphabetKind::Classic
              ? "Hold the button and trace the grey word in one stroke, from the arrow on the left. Release to finish."
-             : "Trace the grey word stroke by stroke, lifting the pen between strokes. Press Done or Enter when finished.";
+             : "Trace the grey word stroke by stroke, lifting the pen between strokes. Press Done or Enter when "
+               "finished.";
 }
 
 const char* trial_end_text(writing::TrialEnd end) {
   switch (end) {
-    case writing::TrialEnd::NotEnded: return "not ended";
-    case writing::TrialEnd::Released: return "pen released";
-    case writing::TrialEnd::Done: return "done";
-    case writing::TrialEnd::TimeLimit: return "time limit reached";
-    case writing::TrialEnd::TooLong: return "trace too long";
+    case writing::TrialEnd::NotEnded:
+      return "not ended";
+    case writing::TrialEnd::Released:
+      return "pen released";
+    case writing::TrialEnd::Done:
+      return "done";
+    case writing::TrialEnd::TimeLimit:
+      return "time limit reached";
+    case writing::TrialEnd::TooLong:
+      return "trace too long";
   }
   return "";
 }

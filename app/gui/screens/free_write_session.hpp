@@ -18,7 +18,7 @@ struct FreeWriteResult {
   writing::WritingTrial trial;  // the infilled trace, time-stamped, with its score
   writing::WritingScore score;
   writing::TrialEnd end = writing::TrialEnd::NotEnded;
-  double seconds = 0;           // from the first pen-down to the last sample
+  double seconds = 0;  // from the first pen-down to the last sample
 };
 
 class FreeWriteSession {

@@ -78,8 +78,9 @@ class LearnDiagnosisScreen final : public Screen {
     const TaskKit& kit = s.kit();
     learn_ui::begin_card(ui, "learn_diagnosis", 900.0f);
     learn_ui::title(ui, s.round() == 1 ? "What the pre-test showed" : "Where you stand now");
-    learn_ui::muted_wrapped("Each bar is one skill the expert uses; a longer bar means more trouble with it. The "
-                            "highlighted skills get drills now.");
+    learn_ui::muted_wrapped(
+        "Each bar is one skill the expert uses; a longer bar means more trouble with it. The "
+        "highlighted skills get drills now.");
     if (!kit.extractor_notice().empty()) learn_ui::muted_wrapped(("Note: " + kit.extractor_notice()).c_str());
     double worst = 1e-9;
     for (double v : e.expertise) worst = std::max(worst, -v);
@@ -115,7 +116,8 @@ class LearnDiagnosisScreen final : public Screen {
       }
       if (drilled) ImGui::PopStyleColor();
       const float fraction = static_cast<float>(-e.expertise[static_cast<std::size_t>(m)] / worst);
-      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));
+      ImGui::PushStyleColor(ImGuiCol_PlotHistogram,
+                            drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));
       char overlay[32];
       std::snprintf(overlay, sizeof overlay, "%.2f", e.expertise[static_cast<std::size_t>(m)]);
       ImGui::ProgressBar(std::max(0.02f, fraction), ImVec2(-1, 18 * sc), overlay);
@@ -126,8 +128,8 @@ class LearnDiagnosisScreen final : public Screen {
     ImGui::Dummy(ImVec2(0, 6 * sc));
     const int trials = s.practice_slot_count();
     const int minutes = s.practice_minutes();
-    ImGui::Text("This round: %d practice trial%s, each after a demo; up to about %d minute%s of practice (%s).",
-                trials, trials == 1 ? "" : "s", minutes, minutes == 1 ? "" : "s",
+    ImGui::Text("This round: %d practice trial%s, each after a demo; up to about %d minute%s of practice (%s).", trials,
+                trials == 1 ? "" : "s", minutes, minutes == 1 ? "" : "s",
                 std::string(condition_name(s.settings().condition)).c_str());
     if (s.settings().condition != StudyCondition::Adaptive)  // research mode: the arm's share of the budget
       ImGui::TextDisabled("Practice time-steps %d of a budget of %d (reference: %s).", s.curriculum().total_steps(),

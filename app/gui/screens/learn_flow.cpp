@@ -20,8 +20,9 @@ TimestampSource clock_of(const LearnFlow& flow) {
 
 records::LearnerStore& LearnFlow::store(const AppServices& services) {
   if (!store_) {
-    const std::filesystem::path dir =
-        services.options.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(services.options.data_dir);
+    const std::filesystem::path dir = services.options.data_dir.empty()
+                                          ? records::default_data_dir()
+                                          : std::filesystem::path(services.options.data_dir);
     store_ = std::make_unique<records::LearnerStore>(dir);
   }
   return *store_;
@@ -70,9 +71,12 @@ const char* screen_for_phase(SessionPhase phase) {
   switch (phase) {
     case SessionPhase::Pretest:
     case SessionPhase::Drills:
-    case SessionPhase::Evaluation: return "learn_trial";
-    case SessionPhase::Diagnosis: return "learn_diagnosis";
-    case SessionPhase::Summary: return "learn_summary";
+    case SessionPhase::Evaluation:
+      return "learn_trial";
+    case SessionPhase::Diagnosis:
+      return "learn_diagnosis";
+    case SessionPhase::Summary:
+      return "learn_summary";
   }
   return "learn_welcome";
 }
@@ -81,20 +85,27 @@ std::string learn_phase_title(const TrainingSession& s, bool demo, bool practice
   const auto count = [](int i, int n) { return std::to_string(i + 1) + " of " + std::to_string(n); };
   if (practice_result) return "Practice";
   switch (s.phase()) {
-    case SessionPhase::Pretest: return "Pre-test  " + count(s.item_index(), s.test_count());
-    case SessionPhase::Evaluation: return "Final test  " + count(s.item_index(), s.test_count());
+    case SessionPhase::Pretest:
+      return "Pre-test  " + count(s.item_index(), s.test_count());
+    case SessionPhase::Evaluation:
+      return "Final test  " + count(s.item_index(), s.test_count());
     case SessionPhase::Drills:
       return std::string(demo ? "Drill demo  " : "Drill practice  ") + count(s.item_index(), s.practice_slot_count());
-    default: return "Trial";
+    default:
+      return "Trial";
   }
 }
 
 std::string device_key(const DeviceChoice& device) {
   switch (device.kind) {
-    case DeviceKind::gamepad: return "gamepad";
-    case DeviceKind::mouse_joystick: return "mouse-joystick";
-    case DeviceKind::keyboard: return "keyboard";
-    case DeviceKind::mouse_pen: return "mouse";
+    case DeviceKind::gamepad:
+      return "gamepad";
+    case DeviceKind::mouse_joystick:
+      return "mouse-joystick";
+    case DeviceKind::keyboard:
+      return "keyboard";
+    case DeviceKind::mouse_pen:
+      return "mouse";
   }
   return "unknown";
 }
@@ -106,9 +117,9 @@ LearnFlow& learn_flow_for_screenshot(AppServices& services, SessionPhase phase, 
   flow.headless_clock = true;
   // One directory per process (removed again with the flow): screenshot processes run in parallel (ctest -j)
   // and a shared directory let one process's session appear in another's review screenshot.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("skillcoach-screenshot-" + std::string(to_string(services.task)) + "-" +
-                                     std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("skillcoach-screenshot-" + std::string(to_string(services.task)) + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   flow.scratch_dir = dir;
   services.options.data_dir = dir.string();

@@ -28,7 +28,7 @@ class LearnFlow {
   // Round size (Ind. Drills, Adaptive), recorded with the session: drills for this many weakest skills ...
   int weak_skills = SessionSettings{}.weak_skills;
   int drills_per_weak_skill = SessionSettings{}.drills_per_weak_skill;  // ... this many unique drills each
-  std::string message;                                  // last problem to show (one line), empty if none
+  std::string message;  // last problem to show (one line), empty if none
 
   records::LearnerStore& store(const AppServices& services);
   TrainingSession* session() { return session_.get(); }
@@ -38,7 +38,7 @@ class LearnFlow {
   // The learner's unfinished session of the current task, if any (for the welcome screen's offer).
   std::optional<records::ResumePoint> unfinished(const AppServices& services);
 
-  bool headless_clock = false;  // fixed timestamps (screenshots)
+  bool headless_clock = false;        // fixed timestamps (screenshots)
   std::filesystem::path scratch_dir;  // screenshots' temporary database directory, removed with the flow
 
   LearnFlow() = default;

@@ -76,10 +76,14 @@ void draw_ghost(ImDrawList& d, ImVec2 o, float w, float h, bool parking) {
 
 const char* device_words(DeviceKind kind) {
   switch (kind) {
-    case DeviceKind::keyboard: return "Up drives forward, Down reverses, Left and Right steer.";
-    case DeviceKind::gamepad: return "The left stick: up/down for throttle and reverse, left/right to steer.";
-    case DeviceKind::mouse_joystick: return "Drag the on-screen stick with the mouse: up/down throttle, left/right steer.";
-    case DeviceKind::mouse_pen: return "Hold the left button to put the pen down; release it when the word is done.";
+    case DeviceKind::keyboard:
+      return "Up drives forward, Down reverses, Left and Right steer.";
+    case DeviceKind::gamepad:
+      return "The left stick: up/down for throttle and reverse, left/right to steer.";
+    case DeviceKind::mouse_joystick:
+      return "Drag the on-screen stick with the mouse: up/down throttle, left/right steer.";
+    case DeviceKind::mouse_pen:
+      return "Hold the left button to put the pen down; release it when the word is done.";
   }
   return "";
 }
@@ -97,10 +101,11 @@ class LearnInstructionsScreen final : public Screen {
     const bool parking = services_.task == TaskKind::parking;
     learn_ui::begin_card(ui, "learn_instructions", 820.0f);
     learn_ui::title(ui, "How it works");
-    ImGui::TextWrapped("%s", parking ? "Goal: drive the blue car into the marked spot, facing the way the outline shows, "
-                                       "without touching the walls or the parked cars. Each trial has a time limit."
-                                     : "Goal: write the shown Balinese characters over the guide, in the right stroke "
-                                       "order and direction. Each trial has a time limit.");
+    ImGui::TextWrapped("%s", parking
+                                 ? "Goal: drive the blue car into the marked spot, facing the way the outline shows, "
+                                   "without touching the walls or the parked cars. Each trial has a time limit."
+                                 : "Goal: write the shown Balinese characters over the guide, in the right stroke "
+                                   "order and direction. Each trial has a time limit.");
     draw_lot_note();
     ImGui::Dummy(ImVec2(0, 6 * s));
     const float box_w = 360.0f * s, box_h = 150.0f * s;
@@ -123,8 +128,9 @@ class LearnInstructionsScreen final : public Screen {
     draw_ghost(d, at, box_w, box_h, parking);
     ImGui::Dummy(ImVec2(box_w, box_h));
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + box_w);
-    ImGui::TextWrapped("In practice drills, the blue band is the expert's path: follow it. Your own trail is drawn "
-                       "in yellow. First the ghost shows the drill, then it is your turn.");
+    ImGui::TextWrapped(
+        "In practice drills, the blue band is the expert's path: follow it. Your own trail is drawn "
+        "in yellow. First the ghost shows the drill, then it is your turn.");
     ImGui::PopTextWrapPos();
     ImGui::EndGroup();
     ImGui::Dummy(ImVec2(0, 8 * s));
@@ -156,8 +162,9 @@ class LearnInstructionsScreen final : public Screen {
   bool confirm_ = false;
 };
 
-const ScreenRegistration kReg{{"learn_instructions", "Trainer: illustrated instructions",
-                               [](AppServices& services) { return std::make_unique<LearnInstructionsScreen>(services); }}};
+const ScreenRegistration kReg{{"learn_instructions", "Trainer: illustrated instructions", [](AppServices& services) {
+                                 return std::make_unique<LearnInstructionsScreen>(services);
+                               }}};
 
 }  // namespace
 }  // namespace sc

@@ -23,7 +23,8 @@ std::vector<ImVec2> trial_points(const Json& trial) {
   std::vector<ImVec2> points;
   if (task_of(trial) == TaskKind::parking) {
     const ParkingPath path = simulate_parking_path(parse_parking_trial(trial, "trial"));
-    for (const auto& s : path.samples) points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
+    for (const auto& s : path.samples)
+      points.emplace_back(static_cast<float>(s.vehicle.x), static_cast<float>(s.vehicle.y));
   } else {
     for (const auto& p : writing::parse_writing_trial(trial, "trial").points)
       points.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
@@ -42,8 +43,8 @@ struct BoxMap {
   }
   std::vector<ImVec2> map(const std::vector<ImVec2>& points) const {
     const float pad = 10.0f;
-    const float scale = std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x),
-                                 (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
+    const float scale =
+        std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x), (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
     std::vector<ImVec2> out;
     for (const ImVec2& p : points)
       out.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,
@@ -83,7 +84,8 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
     hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
   }
   const float pad = 8.0f;
-  const float scale = std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x), (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
+  const float scale =
+      std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x), (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
   std::vector<ImVec2> mapped;
   for (const ImVec2& p : line.points)
     mapped.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,

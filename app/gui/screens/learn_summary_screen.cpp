@@ -55,7 +55,8 @@ class LearnSummaryScreen final : public Screen {
     const float row = ImGui::GetTextLineHeight() + ImGui::GetStyle().CellPadding.y * 2;  // a table row's pitch
     const float rows_height = rows * row;
     // Whole rows only, so the last visible one is not cut.
-    const float room = row * std::max(3.0f, std::floor((static_cast<float>(ui.height) - ImGui::GetCursorPosY() - 160 * sc) / row));
+    const float room =
+        row * std::max(3.0f, std::floor((static_cast<float>(ui.height) - ImGui::GetCursorPosY() - 160 * sc) / row));
     const ImGuiTableFlags scroll = rows_height > room ? ImGuiTableFlags_ScrollY : 0;
     if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp | scroll, ImVec2(0, scroll ? room : 0))) {
       for (const SkillChange& c : summary_->skills) {
@@ -71,7 +72,9 @@ class LearnSummaryScreen final : public Screen {
         ImGui::Text("%.2f -> %.2f", c.before, c.after);
         ImGui::TableNextColumn();
         ImGui::TextColored(c.after >= c.before ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1.0f, 0.6f, 0.5f, 1), "%s",
-                           c.after > c.before ? "better" : c.after == c.before ? "same" : "worse");
+                           c.after > c.before    ? "better"
+                           : c.after == c.before ? "same"
+                                                 : "worse");
       }
       ImGui::EndTable();
     }

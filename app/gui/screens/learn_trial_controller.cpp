@@ -18,7 +18,8 @@ const LearnTrialController::Trial& LearnTrialController::prepare() {
     trial_.reference = s.kit().drill_trial(drill);
     trial_.time_limit = s.drill_time_limit(trial_.item);
     trial_.demo_first = !retry_item_;
-    if (drill.plan.target_skill >= 0) trial_.target = "Practises " + s.kit().describe_skill(drill.plan.target_skill) + ".";
+    if (drill.plan.target_skill >= 0)
+      trial_.target = "Practises " + s.kit().describe_skill(drill.plan.target_skill) + ".";
   } else {
     trial_.reference = s.test_expert_trial();
     trial_.time_limit = s.test_time_limit();
@@ -58,7 +59,8 @@ void LearnTrialController::submit(const Json& attempt, const TrialTimes& times) 
 LearnTrialController::Choice LearnTrialController::draw_result_buttons(UiContext& ui, bool confirm) {
   TrainingSession& s = session();
   const SessionPhase phase = s.phase();
-  const bool testing = phase == SessionPhase::Drills || phase == SessionPhase::Pretest || phase == SessionPhase::Evaluation;
+  const bool testing =
+      phase == SessionPhase::Drills || phase == SessionPhase::Pretest || phase == SessionPhase::Evaluation;
   Choice choice = Choice::none;
   if (was_practice_ && ImGui::Button("One more on this skill", ImVec2(-1, 40 * ui.ui_scale))) {
     retry_item_ = last_item_;

@@ -16,12 +16,12 @@ class LearnTrialController {
  public:
   // The trial about to be played.
   struct Trial {
-    bool drill = false;          // a drill (demo + practice, or a retry without demo); else a test trial
-    int item = 0;                // the curriculum item of a drill
-    Json reference;              // the drill's trial (kit.drill_trial) or the test's expert trial
-    double time_limit = 0.0;     // seconds
-    bool demo_first = false;     // a drill's first play starts with the expert's demo
-    std::string target;          // "Practises <skill words>." for an individualized drill, else empty
+    bool drill = false;       // a drill (demo + practice, or a retry without demo); else a test trial
+    int item = 0;             // the curriculum item of a drill
+    Json reference;           // the drill's trial (kit.drill_trial) or the test's expert trial
+    double time_limit = 0.0;  // seconds
+    bool demo_first = false;  // a drill's first play starts with the expert's demo
+    std::string target;       // "Practises <skill words>." for an individualized drill, else empty
   };
 
   explicit LearnTrialController(LearnFlow& flow) : flow_(flow) {}

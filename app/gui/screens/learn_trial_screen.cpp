@@ -58,7 +58,8 @@ class LearnParkingTrialScreen final : public Screen {
     if (input_.pause_toggled() && stage_ != Stage::result) paused_ = !paused_;
     if (paused()) return;
     stage_time_ += dt;
-    if (stage_ == Stage::countdown && stage_time_ >= kCountdownSeconds) set_stage(demo_pending_ ? Stage::demo : Stage::driving);
+    if (stage_ == Stage::countdown && stage_time_ >= kCountdownSeconds)
+      set_stage(demo_pending_ ? Stage::demo : Stage::driving);
     if (stage_ != Stage::demo && stage_ != Stage::driving) return;
     if (++tick_ < ticks_per_substep_) return;
     tick_ = 0;
@@ -76,11 +77,12 @@ class LearnParkingTrialScreen final : public Screen {
       return;
     }
     const float s = ui.ui_scale;
-    const GaugeLayout gauges = layout_driving_gauges(
-        {static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 12.0f * s}, s);
+    const GaugeLayout gauges =
+        layout_driving_gauges({static_cast<float>(ui.width) - 16.0f * s, static_cast<float>(ui.height) - 12.0f * s}, s);
     // The lot between the header and the gauge strip, so the gauges never hide the goal (the study corner's
     // spots are the bottom-right ones) or a parked car.
-    const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width), std::max(1.0f, gauges.min.y - 8.0f * s - 56 * s)};
+    const PixelViewport viewport{0, 56 * s, static_cast<float>(ui.width),
+                                 std::max(1.0f, gauges.min.y - 8.0f * s - 56 * s)};
     draw_scene(ui, viewport);
     draw_gauges(ui, gauges);
     draw_header(ui);
@@ -173,8 +175,9 @@ class LearnParkingTrialScreen final : public Screen {
   void draw_header(UiContext& ui) {
     const float s = ui.ui_scale;
     learn_ui::begin_header_bar(ui, "learn_trial_header",
-                               stage_ == Stage::result ? trials_.result_title()
-                                                       : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
+                               stage_ == Stage::result
+                                   ? trials_.result_title()
+                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::driving)
       ImGui::Text("Time left %.1f s", std::max(0.0, time_limit_ - drive_->time_seconds()));
     else if (stage_ == Stage::demo)

@@ -98,8 +98,9 @@ class LearnWelcomeScreen final : public Screen {
   // Closed by default: the defaults (3 skills x 2 drills, a few minutes) suit a first session.
   void draw_round_size(UiContext& ui) {
     ImGui::Dummy(ImVec2(0, 4 * ui.ui_scale));
-    const std::string label = "Practice per round: " + std::to_string(flow_.drills_per_weak_skill) + " drills for each of your " +
-                              std::to_string(flow_.weak_skills) + " weakest skills###round_size";
+    const std::string label = "Practice per round: " + std::to_string(flow_.drills_per_weak_skill) +
+                              " drills for each of your " + std::to_string(flow_.weak_skills) +
+                              " weakest skills###round_size";
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     const bool open = ImGui::TreeNode(label.c_str());
     ImGui::PopStyleColor();
@@ -122,10 +123,12 @@ class LearnWelcomeScreen final : public Screen {
     }
     if (services_.task != TaskKind::parking) return;
     learn_ui::heading(ui, "Research mode: goal spots");
-    if (ImGui::RadioButton("Study corner (spots 12-14, the paper's study)", flow_.research_lot == GoalRegion::StudyCorner))
+    if (ImGui::RadioButton("Study corner (spots 12-14, the paper's study)",
+                           flow_.research_lot == GoalRegion::StudyCorner))
       flow_.research_lot = GoalRegion::StudyCorner;
     ImGui::SameLine();
-    if (ImGui::RadioButton("Whole lot", flow_.research_lot == GoalRegion::WholeLot)) flow_.research_lot = GoalRegion::WholeLot;
+    if (ImGui::RadioButton("Whole lot", flow_.research_lot == GoalRegion::WholeLot))
+      flow_.research_lot = GoalRegion::WholeLot;
   }
 
   void draw_start(UiContext& ui) {

@@ -137,7 +137,8 @@ class LearnWriteTrialScreen final : public Screen {
     const FrameInput& in = ui.input;
     const bool may_press = !in.ui_wants_mouse;
     for (const MouseEvent& e : in.mouse_events) pen_.feed({e.time_seconds, e.pixels, e.left_down}, camera, may_press);
-    if (in.mouse_inside || pen_.drawing()) pen_.feed({in.time_seconds, in.mouse_pixels, in.mouse_down[0]}, camera, may_press);
+    if (in.mouse_inside || pen_.drawing())
+      pen_.feed({in.time_seconds, in.mouse_pixels, in.mouse_down[0]}, camera, may_press);
     const bool enter = in.keys_pressed[SDL_SCANCODE_RETURN] || in.keys_pressed[SDL_SCANCODE_KP_ENTER];
     if (enter && !in.ui_wants_keyboard && pen_.started()) pen_.done(in.time_seconds);
     if (pen_.started() && started_.empty()) started_ = records::utc_timestamp_now();
@@ -165,8 +166,10 @@ class LearnWriteTrialScreen final : public Screen {
 
   void draw_canvas(UiContext& ui, const Camera2D& camera) {
     writing_view::WritingScene scene;
-    if (is_drill_) scene.ribbon = reference_.points;
-    else scene.guide = reference_.points;
+    if (is_drill_)
+      scene.ribbon = reference_.points;
+    else
+      scene.guide = reference_.points;
     scene.learner = services_.headless ? scripted_ink_ : pen_.raw().points;
     if (stage_ == Stage::demo) scene.ghost_pen = writing_view::ghost_pen_at(reference_.points, stage_seconds(ui));
     if (stage_ == Stage::result && score_) scene.score = *score_;
@@ -178,8 +181,9 @@ class LearnWriteTrialScreen final : public Screen {
 
   void draw_header(UiContext& ui) {
     learn_ui::begin_header_bar(ui, "learn_write_header",
-                               stage_ == Stage::result ? trials_.result_title()
-                                                       : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
+                               stage_ == Stage::result
+                                   ? trials_.result_title()
+                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
     if (stage_ == Stage::demo)
       ImGui::TextUnformatted("Watch the ghost pen: where each stroke starts, its direction, where the pen lifts.");
     else if (stage_ == Stage::writing)
@@ -212,8 +216,9 @@ class LearnWriteTrialScreen final : public Screen {
   const char* instructions() const {
     if (stage_ == Stage::demo) return "The ghost pen writes the drill. Then it is your turn, over the blue ribbon.";
     if (is_drill_)
-      return single_stroke(reference_.points) ? "Hold the button and trace the blue ribbon in one stroke. Release to finish."
-                                              : "Trace the blue ribbon stroke by stroke. Press Done or Enter when finished.";
+      return single_stroke(reference_.points)
+                 ? "Hold the button and trace the blue ribbon in one stroke. Release to finish."
+                 : "Trace the blue ribbon stroke by stroke. Press Done or Enter when finished.";
     return free_write_instructions(reference_.scenario.alphabet);
   }
 
@@ -221,10 +226,13 @@ class LearnWriteTrialScreen final : public Screen {
     learn_ui::begin_card(ui, "learn_write_result", 460.0f, 0.75f);
     learn_ui::title(ui, score_ && score_->score > -0.25 ? "Well written!" : "Written");
     ImGui::Text("Score %s", learn_ui::reward_text(trials_.last_reward()).c_str());
-    if (score_) ImGui::Text("Recall %.2f  ·  precision %.2f  ·  %s", score_->recall, score_->precision, trial_end_text(end_reason_));
+    if (score_)
+      ImGui::Text("Recall %.2f  ·  precision %.2f  ·  %s", score_->recall, score_->precision,
+                  trial_end_text(end_reason_));
     if (!trials_.note().empty()) learn_ui::muted_wrapped(trials_.note().c_str());
     const bool confirm = ui.time_seconds > stage_started_ && learn_ui::confirm_pressed(ui.input);
-    if (trials_.draw_result_buttons(ui, confirm) == LearnTrialController::Choice::another_trial) prepare(ui.time_seconds);
+    if (trials_.draw_result_buttons(ui, confirm) == LearnTrialController::Choice::another_trial)
+      prepare(ui.time_seconds);
     learn_ui::end_card();
   }
 

@@ -18,8 +18,9 @@ ReviewModel::ReviewModel(AppServices& services) : services_(services) {
 
 void ReviewModel::reload() {
   try {
-    const std::filesystem::path dir = services_.options.data_dir.empty() ? records::default_data_dir()
-                                                                         : std::filesystem::path(services_.options.data_dir);
+    const std::filesystem::path dir = services_.options.data_dir.empty()
+                                          ? records::default_data_dir()
+                                          : std::filesystem::path(services_.options.data_dir);
     store_ = std::make_unique<records::LearnerStore>(dir, records::StoreOptions{.read_only = true});
     rows_ = review::session_rows(store_->list_learners());
     message.clear();
@@ -29,7 +30,9 @@ void ReviewModel::reload() {
   }
 }
 
-void ReviewModel::sort(review::SessionColumn column, bool ascending) { review::sort_session_rows(rows_, column, ascending); }
+void ReviewModel::sort(review::SessionColumn column, bool ascending) {
+  review::sort_session_rows(rows_, column, ascending);
+}
 
 const review::SessionListRow* ReviewModel::session_row() const {
   if (!session_) return nullptr;

@@ -16,11 +16,13 @@ constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWi
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 std::string session_label(const review::SessionListRow& row) {
-  return row.learner + " - " + review::cell_text(row, review::SessionColumn::Task) + " - " + row.condition + " - " + review::cell_text(row, review::SessionColumn::Date);
+  return row.learner + " - " + review::cell_text(row, review::SessionColumn::Task) + " - " + row.condition + " - " +
+         review::cell_text(row, review::SessionColumn::Date);
 }
 
 void world_frame(UiContext& ui, float x, float y, float w, float h) {
-  ImGui::GetBackgroundDrawList()->AddRect({x, y}, {x + w, y + h}, IM_COL32(60, 68, 82, 255), 0.0f, 0, 1.0f * ui.ui_scale);
+  ImGui::GetBackgroundDrawList()->AddRect({x, y}, {x + w, y + h}, IM_COL32(60, 68, 82, 255), 0.0f, 0,
+                                          1.0f * ui.ui_scale);
 }
 
 }  // namespace
@@ -64,7 +66,8 @@ void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
   if (ImGui::Button("Start screen", {back_w, 0})) ui.navigator.go_to("start");
   ImGui::End();
   if (!model.message.empty()) {
-    begin_review_panel("review_message", 0, static_cast<float>(ui.height) - 40 * s, static_cast<float>(ui.width), 40 * s);
+    begin_review_panel("review_message", 0, static_cast<float>(ui.height) - 40 * s, static_cast<float>(ui.width),
+                       40 * s);
     ImGui::TextColored({1.0f, 0.65f, 0.5f, 1.0f}, "%s", model.message.c_str());
     ImGui::End();
   }
@@ -133,8 +136,9 @@ void draw_review_before_after(UiContext& ui, ReviewModel& model, std::size_t& gr
   }
   ImGui::Dummy({0, 10 * s});
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextDisabled("Orange: the pre-test trials. Teal: the evaluation trials (fresh scenarios of the same "
-                      "family). Faint ribbons: the experts' paths.");
+  ImGui::TextDisabled(
+      "Orange: the pre-test trials. Teal: the evaluation trials (fresh scenarios of the same "
+      "family). Faint ribbons: the experts' paths.");
   ImGui::PopTextWrapPos();
   ImGui::End();
   if (groups.empty()) return;
@@ -167,7 +171,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   if (const auto* chart = model.expertise_chart(); chart && !chart->skills.empty()) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - 8 * s,
-                                                                  review_view::expertise_chart_height(*chart, s)));
+                                                                 review_view::expertise_chart_height(*chart, s)));
     review_view::draw_expertise_chart(*ImGui::GetWindowDrawList(), at, size, *chart, s, ui.fonts.bold);
     ImGui::Dummy(size);
   } else {
@@ -184,9 +188,10 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   if (!d) {
     ImGui::TextDisabled("%s", model.diagnosis_problem.c_str());
   } else {
-    ImGui::TextDisabled("Alg. 2 recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
-                        "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward).",
-                        d->pretest_trials, d->extractor.c_str());
+    ImGui::TextDisabled(
+        "Alg. 2 recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
+        "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward).",
+        d->pretest_trials, d->extractor.c_str());
     ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
                        d->matches_stored ? "Matches the stored diagnosis."
                                          : "Differs from the stored diagnosis (model or data changed since).");

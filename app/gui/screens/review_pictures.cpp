@@ -54,7 +54,8 @@ review_view::RewardPlot reward_plot(const review::TrialReview& trial) {
   review_view::RewardPlot plot;
   plot.times = trial.reward_times;
   plot.rewards = trial.rewards;
-  plot.caption = trial.task == TaskKind::parking ? "reward per control step (0 = goal)" : "score of the ink so far (0 = perfect)";
+  plot.caption =
+      trial.task == TaskKind::parking ? "reward per control step (0 = goal)" : "score of the ink so far (0 = perfect)";
   return plot;
 }
 
@@ -62,8 +63,9 @@ review_view::TrialImageText trial_image_text(const std::string& learner, const r
   review_view::TrialImageText text;
   text.title = learner + " - " + std::string(to_string(trial.task)) + " - " + trial.label;
   const auto& r = trial.stored.record;
-  text.lines.push_back((r.score ? "score " + score_text(*r.score) : "demo (not scored), reward " + score_text(trial.reward)) +
-                       ", " + std::to_string(trial.learner_track.steps()) + " steps, " + r.device);
+  text.lines.push_back(
+      (r.score ? "score " + score_text(*r.score) : "demo (not scored), reward " + score_text(trial.reward)) + ", " +
+      std::to_string(trial.learner_track.steps()) + " steps, " + r.device);
   std::set<int> seen;
   for (const auto* spans : {&trial.learner_skills, &trial.expert_skills, &trial.ghost_skills})
     for (const auto& s : *spans)
@@ -101,8 +103,10 @@ review_view::BeforeAfterPicture before_after_picture(const review::BeforeAfterGr
 std::vector<std::string> before_after_lines(const review::BeforeAfterGroup& group,
                                             const std::vector<review::TrialReview>& trials) {
   std::vector<std::string> lines;
-  if (!group.pretest_seqs.empty()) lines.push_back("pre-test mean score " + score_text(mean_reward(group.pretest_seqs, trials)));
-  if (!group.eval_seqs.empty()) lines.push_back("evaluation mean score " + score_text(mean_reward(group.eval_seqs, trials)));
+  if (!group.pretest_seqs.empty())
+    lines.push_back("pre-test mean score " + score_text(mean_reward(group.pretest_seqs, trials)));
+  if (!group.eval_seqs.empty())
+    lines.push_back("evaluation mean score " + score_text(mean_reward(group.eval_seqs, trials)));
   lines.push_back("faint ribbons: the expert's paths of the same scenarios");
   return lines;
 }

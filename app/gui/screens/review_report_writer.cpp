@@ -64,10 +64,10 @@ class ReportWriter {
     const std::string prefix = "session" + std::to_string(row.session_id) + "_";
     for (const auto& t : trials) {
       report.trials.push_back({row.session_id, t});
-      report.trial_images.push_back(save(
-          review_view::render_trial_image(context(), trial_picture(t), trial_image_text(row.learner, t),
-                                          request_.image_width, request_.image_height),
-          prefix + "trial" + std::to_string(t.stored.seq) + ".png", t.label));
+      report.trial_images.push_back(
+          save(review_view::render_trial_image(context(), trial_picture(t), trial_image_text(row.learner, t),
+                                               request_.image_width, request_.image_height),
+               prefix + "trial" + std::to_string(t.stored.seq) + ".png", t.label));
     }
     // A damaged row takes out only the picture that reads it; output errors still end the report.
     std::vector<review::BeforeAfterGroup> groups;
@@ -89,10 +89,10 @@ class ReportWriter {
       result_.problems.push_back(where + ", expertise chart left out: " + one_line(e.what()));
     }
     if (rounds && !rounds->rounds.empty())
-      report.expertise_chart = save(review_view::render_expertise_chart_image(
-                                        context(), expertise_chart(*rounds), "Expertise per skill across rounds",
-                                        request_.image_width),
-                                    prefix + "expertise.png", "Expertise per skill across rounds");
+      report.expertise_chart =
+          save(review_view::render_expertise_chart_image(context(), expertise_chart(*rounds),
+                                                         "Expertise per skill across rounds", request_.image_width),
+               prefix + "expertise.png", "Expertise per skill across rounds");
     try {
       report.diagnosis = review::explain_diagnosis(review);
     } catch (const InputError& e) {
@@ -130,7 +130,8 @@ ReportResult write_learner_report(const ReportRequest& request) {
   for (const auto& row : rows) sessions.push_back(writer.session(store, row));
   result.sessions = static_cast<int>(sessions.size());
 
-  const fs::path csv = request.out / "trials.csv", json = request.out / "trials.json", html = request.out / "report.html";
+  const fs::path csv = request.out / "trials.csv", json = request.out / "trials.json",
+                 html = request.out / "report.html";
   write_file(csv, review::trials_csv(sessions));
   write_json_file(json, review::trials_json(request.learner, sessions), 1);
   write_file(html, review::report_html(request.learner, sessions));

@@ -31,10 +31,18 @@ class ReviewScreen final : public Screen {
   void draw(UiContext& ui) override {
     draw_review_top_bar(ui, model_, page_);
     switch (page_) {
-      case ReviewPage::Sessions: draw_review_sessions(ui, model_, page_); break;
-      case ReviewPage::Trial: draw_review_trial(ui, model_); break;
-      case ReviewPage::BeforeAfter: draw_review_before_after(ui, model_, group_); break;
-      case ReviewPage::Expertise: draw_review_expertise(ui, model_); break;
+      case ReviewPage::Sessions:
+        draw_review_sessions(ui, model_, page_);
+        break;
+      case ReviewPage::Trial:
+        draw_review_trial(ui, model_);
+        break;
+      case ReviewPage::BeforeAfter:
+        draw_review_before_after(ui, model_, group_);
+        break;
+      case ReviewPage::Expertise:
+        draw_review_expertise(ui, model_);
+        break;
     }
   }
 
@@ -48,7 +56,8 @@ ScreenFactory open_on(ReviewPage page) {
   return [page](AppServices& services) { return std::make_unique<ReviewScreen>(services, page); };
 }
 
-const ScreenRegistration kSessions{{"review", "Review: learners' sessions (instructor)", open_on(ReviewPage::Sessions)}};
+const ScreenRegistration kSessions{
+    {"review", "Review: learners' sessions (instructor)", open_on(ReviewPage::Sessions)}};
 const ScreenRegistration kTrial{{"review_trial", "Review: trial viewer with playback", open_on(ReviewPage::Trial)}};
 const ScreenRegistration kBeforeAfter{
     {"review_before_after", "Review: before/after overlays", open_on(ReviewPage::BeforeAfter)}};

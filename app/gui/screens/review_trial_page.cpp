@@ -21,7 +21,8 @@ void draw_trial_list(UiContext& ui, ReviewModel& model, float x, float y, float 
   ImGui::TextDisabled("Trials");
   const int current = model.trial() ? model.trial()->stored.seq : -1;
   for (const auto& t : model.session()->record().trials) {
-    const std::string label = std::to_string(t.seq) + ". " + review::trial_label(t).substr(0, review::trial_label(t).find(", trial")) +
+    const std::string label = std::to_string(t.seq) + ". " +
+                              review::trial_label(t).substr(0, review::trial_label(t).find(", trial")) +
                               (t.record.score ? "  " + std::to_string(*t.record.score).substr(0, 5) : "");
     if (ImGui::Selectable(label.c_str(), t.seq == current)) model.select_trial(t.seq);
   }
@@ -46,7 +47,8 @@ void draw_input_stick(UiContext& ui, const review::TrialReview& trial, int step,
   const auto& in = inputs[static_cast<std::size_t>(std::clamp(step, 0, static_cast<int>(inputs.size()) - 1))];
   // Parking: steering right, throttle up (forward); writing: the pen's direction on the canvas (y down).
   const float dx = static_cast<float>(std::clamp(in[0] / scale, -1.0, 1.0));
-  const float dy = static_cast<float>(std::clamp((trial.task == TaskKind::parking ? -in[1] : in[1]) / scale, -1.0, 1.0));
+  const float dy =
+      static_cast<float>(std::clamp((trial.task == TaskKind::parking ? -in[1] : in[1]) / scale, -1.0, 1.0));
   const ImVec2 knob(centre.x + dx * radius * 0.8f, centre.y + dy * radius * 0.8f);
   dl.AddLine(centre, knob, IM_COL32(255, 226, 138, 200), 3.0f * ui.ui_scale);
   dl.AddCircleFilled(knob, radius * 0.28f, IM_COL32(255, 226, 138, 255), 24);
@@ -70,7 +72,8 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
   // The stick and the reward plot keep the bottom of the panel; the legend scrolls above them when a task has
   // many skills (writing has 8).
   const float radius = 38 * s, plot_h = 136 * s;
-  const float bottom_h = ImGui::GetFontSize() * 1.6f + 2 * radius + plot_h + 4 * ImGui::GetStyle().ItemSpacing.y + 24 * s;
+  const float bottom_h =
+      ImGui::GetFontSize() * 1.6f + 2 * radius + plot_h + 4 * ImGui::GetStyle().ItemSpacing.y + 24 * s;
   const float legend_h = std::max(60 * s, ImGui::GetWindowPos().y + h - ImGui::GetCursorScreenPos().y - bottom_h);
   ImGui::BeginChild("legend", {0, legend_h}, false);
   // One row per skill in the picture: its colour, its words and the expert example the trainer shows.
@@ -100,7 +103,8 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
   review_view::RewardPlot plot = reward_plot(trial);
   plot.playhead = model.playback().seconds();
   const ImVec2 at = ImGui::GetCursorScreenPos();
-  review_view::draw_reward_plot(*ImGui::GetWindowDrawList(), at, {w - 2 * ImGui::GetStyle().WindowPadding.x, plot_h}, plot, s);
+  review_view::draw_reward_plot(*ImGui::GetWindowDrawList(), at, {w - 2 * ImGui::GetStyle().WindowPadding.x, plot_h},
+                                plot, s);
   ImGui::Dummy({0, plot_h});
   ImGui::End();
 }

@@ -39,10 +39,14 @@ bool same_device(const DeviceChoice& a, const DeviceChoice& b) {
 
 const char* device_hint(const DeviceChoice& device) {
   switch (device.kind) {
-    case DeviceKind::gamepad: return "left stick steers and drives";
-    case DeviceKind::mouse_joystick: return "drag the on-screen stick, as in the study";
-    case DeviceKind::keyboard: return "arrow keys";
-    case DeviceKind::mouse_pen: return "hold the button and write";
+    case DeviceKind::gamepad:
+      return "left stick steers and drives";
+    case DeviceKind::mouse_joystick:
+      return "drag the on-screen stick, as in the study";
+    case DeviceKind::keyboard:
+      return "arrow keys";
+    case DeviceKind::mouse_pen:
+      return "hold the button and write";
   }
   return "";
 }
@@ -87,7 +91,7 @@ class StartScreen final : public Screen {
       r.fill_rect({{x, 2.9f}, {1.05f, 2.2f}, 0.0f}, parked);
       if (i != 2) r.fill_rect({{x, 15.1f}, {1.05f, 2.2f}, 0.0f}, parked);
     }
-    const std::array<Vec2f, 6> ghost{Vec2f{3.0f, 9.0f}, Vec2f{12.0f, 9.0f}, Vec2f{22.0f, 9.2f},
+    const std::array<Vec2f, 6> ghost{Vec2f{3.0f, 9.0f},  Vec2f{12.0f, 9.0f}, Vec2f{22.0f, 9.2f},
                                      Vec2f{25.5f, 8.6f}, Vec2f{26.5f, 6.5f}, Vec2f{26.5f, 3.2f}};
     PathStyle round;
     round.join = LineJoin::round;
@@ -152,7 +156,8 @@ class StartScreen final : public Screen {
       if (option.task == TaskKind::writing) ImGui::SameLine();
       const bool selected = services_.task == option.task;
       const ImGuiStyle& style = ImGui::GetStyle();
-      ImGui::PushStyleColor(ImGuiCol_Button, selected ? style.Colors[ImGuiCol_HeaderActive] : style.Colors[ImGuiCol_FrameBg]);
+      ImGui::PushStyleColor(ImGuiCol_Button,
+                            selected ? style.Colors[ImGuiCol_HeaderActive] : style.Colors[ImGuiCol_FrameBg]);
       ImGui::PushStyleColor(ImGuiCol_ButtonHovered,
                             selected ? style.Colors[ImGuiCol_HeaderActive] : style.Colors[ImGuiCol_FrameBgHovered]);
       if (ImGui::Button(option.label, card)) services_.task = option.task;
@@ -198,12 +203,13 @@ class StartScreen final : public Screen {
     // Instructors: the learner database's sessions, trials and diagnoses (app/gui/screens/review_screen.cpp).
     if (Navigator::is_available("review")) {
       ImGui::Dummy(ImVec2(0, 4.0f * s));
-      if (ImGui::Button("Instructor review: learners, trials, diagnoses", ImVec2(-1.0f, 0.0f))) ui.navigator.go_to("review");
+      if (ImGui::Button("Instructor review: learners, trials, diagnoses", ImVec2(-1.0f, 0.0f)))
+        ui.navigator.go_to("review");
     }
     if (!trainer || !practice) {
       const char* what = !trainer && !practice ? "Training and free practice" : !trainer ? "Training" : "Free practice";
-      const std::string note = std::string(what) + " for " +
-                               std::string(to_string(services_.task)) + " is not available yet in this build.";
+      const std::string note =
+          std::string(what) + " for " + std::string(to_string(services_.task)) + " is not available yet in this build.";
       ImGui::TextDisabled("%s", note.c_str());
     }
   }

@@ -14,8 +14,8 @@ std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
   return out;
 }
 
-StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven,
-                             int driven_length, int shift) {
+StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven, int driven_length,
+                             int shift) {
   const std::vector<int> a = skill_per_step(clean, clean_length);
   const std::vector<int> b = skill_per_step(driven, driven_length);
   StepAgreement out;

@@ -23,11 +23,11 @@ struct StepAgreement {
   int agreed = 0;  // of them with the same skill
   double share() const { return steps > 0 ? static_cast<double>(agreed) / steps : 0.0; }
 };
-StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven,
-                             int driven_length, int shift);
+StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven, int driven_length,
+                             int shift);
 
 struct DriveCondition {
-  std::string name;                 // e.g. "keyboard, noise 0.1, delay 0.2 s, 15 Hz"
+  std::string name;  // e.g. "keyboard, noise 0.1, delay 0.2 s, 15 Hz"
   RealisticDriverProfile profile;
 };
 // The table's rows: 15 Hz input alone, stick noise, delay, each device, a harder novice, 5 Hz input.

@@ -34,7 +34,8 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
   for (std::size_t k = 0; k < pretest.size(); ++k) {
     const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;
     Rng drive_rng = learner_rng.fork(1 + k);
-    trials.push_back(parking_trial_to_json(realistic_drive(parse_parking_trial(expert_doc, "expert pool"), profile, drive_rng)));
+    trials.push_back(
+        parking_trial_to_json(realistic_drive(parse_parking_trial(expert_doc, "expert pool"), profile, drive_rng)));
   }
   const Diagnosis d = diagnose_trials(kit, trials, seed, mode);
   LearnerOutcome out;
@@ -45,7 +46,8 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
   out.quiet = out.weakest_per_trial >= quiet_expertise_threshold(mode);
   const std::vector<int> spoiled = deficit_skills(deficit, kit.skill_motions());
   auto is_spoiled = [&](int m) { return std::find(spoiled.begin(), spoiled.end(), m) != spoiled.end(); };
-  out.deficit_skills_seen = static_cast<int>(std::count_if(d.expertise.ranking.begin(), d.expertise.ranking.end(), is_spoiled));
+  out.deficit_skills_seen =
+      static_cast<int>(std::count_if(d.expertise.ranking.begin(), d.expertise.ranking.end(), is_spoiled));
   const int k = std::min({kTopTargets, out.deficit_skills_seen, static_cast<int>(out.targets.size())});
   out.recovered = k > 0 && std::all_of(out.targets.begin(), out.targets.begin() + k, is_spoiled);
   return out;

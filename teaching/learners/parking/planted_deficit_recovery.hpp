@@ -10,7 +10,8 @@
 //    skills (never reversing), the "braking" skills (late braking) - motion_reverses / motion_brakes - and
 //    the skills steering beyond half lock on most (>= 50 %) of their expert steps (weak steering).
 //  * Recovered: the first K targets are all deficit skills, K = min(kTopTargets, N_target, deficit skills
-//    the pre-test's expert drives use). A pre-test without any deficit skill cannot show the deficit and counts as missed.
+//    the pre-test's expert drives use). A pre-test without any deficit skill cannot show the deficit and counts as
+//    missed.
 //  * Noise-only learners: quiet when no skill's expertise per pre-test trial (E_m / trials) lies below the
 //    mode's threshold (kQuietExpertise*).
 #include <cstdint>

@@ -77,19 +77,26 @@ void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
 
 std::string device_name(DriveDevice device) {
   switch (device) {
-    case DriveDevice::Gamepad: return "gamepad";
-    case DriveDevice::MouseJoystick: return "mouse";
-    case DriveDevice::Keyboard: return "keyboard";
+    case DriveDevice::Gamepad:
+      return "gamepad";
+    case DriveDevice::MouseJoystick:
+      return "mouse";
+    case DriveDevice::Keyboard:
+      return "keyboard";
   }
   return "gamepad";
 }
 
 std::string deficit_name(PlantedDeficit deficit) {
   switch (deficit) {
-    case PlantedDeficit::None: return "none";
-    case PlantedDeficit::NeverReversing: return "never-reversing";
-    case PlantedDeficit::WeakSteering: return "weak-steering";
-    case PlantedDeficit::LateBraking: return "late-braking";
+    case PlantedDeficit::None:
+      return "none";
+    case PlantedDeficit::NeverReversing:
+      return "never-reversing";
+    case PlantedDeficit::WeakSteering:
+      return "weak-steering";
+    case PlantedDeficit::LateBraking:
+      return "late-braking";
   }
   return "none";
 }
@@ -117,7 +124,8 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
   const int delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));  // input samples
   const int late = static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz));
-  std::vector<bool> braking = p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
+  std::vector<bool> braking =
+      p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
   const int expert_samples = static_cast<int>(expert.actions.size()) * per_step;
 
   ParkingTrial out;

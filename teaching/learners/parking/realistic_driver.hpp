@@ -44,10 +44,10 @@ inline constexpr double kLateBrakingSeconds = 0.6;
 
 struct RealisticDriverProfile {
   DriveDevice device = DriveDevice::Gamepad;
-  int control_hz = 15;                  // 15 or 5 (parking::kSimulationHz or parking::kControlHz)
-  double stick_noise = 0.15;            // wander standard deviation, action units
-  double noise_time_constant_s = 0.3;   // wander correlation time
-  double reaction_delay_s = 0.2;        // >= 0
+  int control_hz = 15;                 // 15 or 5 (parking::kSimulationHz or parking::kControlHz)
+  double stick_noise = 0.15;           // wander standard deviation, action units
+  double noise_time_constant_s = 0.3;  // wander correlation time
+  double reaction_delay_s = 0.2;       // >= 0
   PlantedDeficit deficit = PlantedDeficit::None;
 };
 

@@ -68,8 +68,8 @@ TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersAreFirstDrilledOnReversi
       ASSERT_FALSE(o.targets.empty());
       first_reverses += std::find(reversing.begin(), reversing.end(), o.targets.front()) != reversing.end();
       planted += o.weakest_per_trial;
-      noise_only +=
-          diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, mode, kSeed, i).weakest_per_trial;
+      noise_only += diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, mode, kSeed, i)
+                        .weakest_per_trial;
     }
     EXPECT_GE(first_reverses, kLearners - 1) << "mode " << static_cast<int>(mode);
     EXPECT_LT(planted, noise_only) << "mode " << static_cast<int>(mode);
