@@ -116,7 +116,7 @@ int run_bench(const BenchOptions& o) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_bench(CLI::App& sub) {
   auto options = std::make_shared<BenchOptions>();
   sub.add_flag("--quick", options->quick, "3 short repetitions per benchmark instead of 5 of at least 0.5 s");
   auto* out = sub.add_option("--out", options->out,
@@ -132,8 +132,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"bench", "Run every benchmark and write docs/benchmarks.md (median and spread)",
-                                "skillcoach bench --quick --out docs/benchmarks.md", setup}};
+const CommandRegistration kBenchCommandRegistration{
+    {"bench", "Run every benchmark and write docs/benchmarks.md (median and spread)",
+     "skillcoach bench --quick --out docs/benchmarks.md", setup_bench}};
 
 }  // namespace
 }  // namespace sc::cli

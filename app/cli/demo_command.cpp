@@ -10,14 +10,14 @@
 namespace sc::cli {
 namespace {
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_demo(CLI::App& sub) {
   auto out = std::make_shared<std::string>();
   sub.add_option("--out", *out, "PNG file to write (default: ./skillcoach-demo.png)");
   return [out] { return run_headless_demo(out->empty() ? default_demo_path() : std::filesystem::path(*out)); };
 }
 
-const CommandRegistration kReg{
-    {"demo", "Render the headless demo screenshot and print its path", "skillcoach demo --out demo.png", setup}};
+const CommandRegistration kDemoCommandRegistration{
+    {"demo", "Render the headless demo screenshot and print its path", "skillcoach demo --out demo.png", setup_demo}};
 
 }  // namespace
 }  // namespace sc::cli

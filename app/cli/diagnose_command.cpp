@@ -113,7 +113,7 @@ int run(const DiagnoseArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_diagnose(CLI::App& sub) {
   auto args = std::make_shared<DiagnoseArgs>();
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
   sub.add_option("--model", args->model,
@@ -130,8 +130,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"diagnose", "Find a learner's weakest skills in their trials and build drills for them",
-                                "skillcoach diagnose --task parking --png drills/ pretest1.json pretest2.json", setup}};
+const CommandRegistration kDiagnoseCommandRegistration{
+    {"diagnose", "Find a learner's weakest skills in their trials and build drills for them",
+     "skillcoach diagnose --task parking --png drills/ pretest1.json pretest2.json", setup_diagnose}};
 
 }  // namespace
 }  // namespace sc::cli

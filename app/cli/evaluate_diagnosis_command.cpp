@@ -97,7 +97,7 @@ int run(const EvaluateDiagnosisArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   auto args = std::make_shared<EvaluateDiagnosisArgs>();
   sub.add_option("--task", args->task, "parking (writing: not measured by this command)")->required();
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt)");
@@ -114,10 +114,10 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{
+const CommandRegistration kEvaluateDiagnosisCommandRegistration{
     {"evaluate-diagnosis",
      "Planted-weakness recovery of the diagnosis on realistic (noisy, delayed, per-device) learners",
-     "skillcoach evaluate-diagnosis --task parking --learners 20 --seed 2", setup}};
+     "skillcoach evaluate-diagnosis --task parking --learners 20 --seed 2", setup_evaluate_diagnosis}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -181,7 +181,7 @@ int run(const EvaluateArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_evaluate_skills(CLI::App& sub) {
   auto args = std::make_shared<EvaluateArgs>();
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
   auto* model = sub.add_option("--model", args->model, "CompILE model file");
@@ -214,9 +214,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{
+const CommandRegistration kEvaluateSkillsCommandRegistration{
     {"evaluate-skills", "Measure a CompILE model's (or the time heuristic's) segmentation quality on fresh expert data",
-     "skillcoach evaluate-skills --task writing --model assets/models/writing.pt --count 200", setup}};
+     "skillcoach evaluate-skills --task writing --model assets/models/writing.pt --count 200", setup_evaluate_skills}};
 
 }  // namespace
 }  // namespace sc::cli

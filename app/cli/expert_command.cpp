@@ -125,7 +125,7 @@ int run_writing(const ExpertArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_expert(CLI::App& sub) {
   auto args = std::make_shared<ExpertArgs>();
   add_task_option(sub, args->task, "parking (plans scenarios) or writing (gold trials of generated words, needs --out)")
       ->required();
@@ -146,9 +146,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{
+const CommandRegistration kExpertCommandRegistration{
     {"expert", "Plan parking scenarios with the expert and summarise them, or write writing gold trials",
-     "skillcoach expert --task parking --count 1000 --seed 1 --variant parked", setup}};
+     "skillcoach expert --task parking --count 1000 --seed 1 --variant parked", setup_expert}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -44,7 +44,7 @@ int run(const PoolArgs& args) {
   return parked == args.count ? 0 : 1;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_expert_pool(CLI::App& sub) {
   auto args = std::make_shared<PoolArgs>();
   add_task_option(sub, args->task, "Task whose expert pool to generate (parking)")->required();
   sub.add_option("--count", args->count, "Scenarios in the pool")->capture_default_str()->check(CLI::Range(1, 100000));
@@ -56,8 +56,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"expert-pool", "Generate the cached expert pool the parking teaching flow starts from",
-                                "skillcoach expert-pool --task parking --count 100 --seed 0", setup}};
+const CommandRegistration kExpertPoolCommandRegistration{
+    {"expert-pool", "Generate the cached expert pool the parking teaching flow starts from",
+     "skillcoach expert-pool --task parking --count 100 --seed 0", setup_expert_pool}};
 
 }  // namespace
 }  // namespace sc::cli

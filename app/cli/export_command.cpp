@@ -18,7 +18,7 @@ struct ExportOptions {
   std::string out;
 };
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_export(CLI::App& sub) {
   auto options = std::make_shared<ExportOptions>();
   sub.add_option("--data-dir", options->data_dir,
                  "Directory holding skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
@@ -35,8 +35,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"export", "Export every learner record (trials with their trajectories) as JSON",
-                                "skillcoach export --data-dir ~/.local/share/skillcoach --out records.json", setup}};
+const CommandRegistration kExportCommandRegistration{
+    {"export", "Export every learner record (trials with their trajectories) as JSON",
+     "skillcoach export --data-dir ~/.local/share/skillcoach --out records.json", setup_export}};
 
 }  // namespace
 }  // namespace sc::cli

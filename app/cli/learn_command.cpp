@@ -155,7 +155,7 @@ int run(const LearnOptions& o) {
   return report_unsaved(store);
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_learn(CLI::App& sub) {
   auto o = std::make_shared<LearnOptions>();
   add_task_option(sub, o->task, "parking (default) or writing");
   sub.add_option("--data-dir", o->data_dir, "Directory of the learner database (default: XDG data directory)");
@@ -179,8 +179,9 @@ CommandRunner setup(CLI::App& sub) {
   return [o] { return run(*o); };
 }
 
-const CommandRegistration kReg{{"learn", "Play a whole training session headless with a scripted learner",
-                                "skillcoach learn --task parking --data-dir /tmp/sc --learner ada", setup}};
+const CommandRegistration kLearnCommandRegistration{
+    {"learn", "Play a whole training session headless with a scripted learner",
+     "skillcoach learn --task parking --data-dir /tmp/sc --learner ada", setup_learn}};
 
 }  // namespace
 }  // namespace sc::cli

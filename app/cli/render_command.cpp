@@ -61,7 +61,7 @@ int render_writing(const RenderArgs& args, int width, int height) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_render(CLI::App& sub) {
   auto args = std::make_shared<RenderArgs>();
   add_task_option(sub, args->task)->required();
   sub.add_option("--trajectory", args->trajectory, "Trial file (JSON)")->required();
@@ -76,10 +76,11 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"render", "Draw a trial file (path, final car, optional expert ghost) into a PNG",
-                                "skillcoach render --task parking --trajectory trial.json --out trial.png "
-                                "--overlay expert --size 1280x720",
-                                setup}};
+const CommandRegistration kRenderCommandRegistration{
+    {"render", "Draw a trial file (path, final car, optional expert ghost) into a PNG",
+     "skillcoach render --task parking --trajectory trial.json --out trial.png "
+     "--overlay expert --size 1280x720",
+     setup_render}};
 
 }  // namespace
 }  // namespace sc::cli

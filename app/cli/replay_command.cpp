@@ -36,7 +36,7 @@ int replay_parking(const std::string& file) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_replay(CLI::App& sub) {
   auto args = std::make_shared<ReplayArgs>();
   add_task_option(sub, args->task, "Task of the trial file (parking; writing trials are not simulated)")->required();
   sub.add_option("file", args->file, "Trial file (JSON)")->required();
@@ -46,8 +46,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"replay", "Re-simulate a trial file and print the states step by step",
-                                "skillcoach replay --task parking trial.json", setup}};
+const CommandRegistration kReplayCommandRegistration{{"replay",
+                                                      "Re-simulate a trial file and print the states step by step",
+                                                      "skillcoach replay --task parking trial.json", setup_replay}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -21,7 +21,7 @@ struct ReportOptions {
   std::string out;
 };
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_report(CLI::App& sub) {
   auto options = std::make_shared<ReportOptions>();
   sub.add_option("--data-dir", options->data_dir,
                  "Directory holding skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
@@ -44,8 +44,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"report", "Write an instructor's report of a learner (pictures, CSV/JSON, HTML)",
-                                "skillcoach report --data-dir DIR --learner Ada --out report/", setup}};
+const CommandRegistration kReportCommandRegistration{
+    {"report", "Write an instructor's report of a learner (pictures, CSV/JSON, HTML)",
+     "skillcoach report --data-dir DIR --learner Ada --out report/", setup_report}};
 
 }  // namespace
 }  // namespace sc::cli

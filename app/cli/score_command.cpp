@@ -33,16 +33,16 @@ int score_writing_file(const std::string& file) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_score(CLI::App& sub) {
   auto args = std::make_shared<ScoreArgs>();
   sub.add_option("--task", args->task, "Task of the trial")->required()->check(CLI::IsMember({"writing"}));
   sub.add_option("file", args->file, "Trial file (JSON)")->required();
   return [args] { return score_writing_file(args->file); };
 }
 
-const CommandRegistration kReg{{"score",
-                                "Score a trial file against the expert and print the score and its parts (JSON)",
-                                "skillcoach score --task writing trial.json", setup}};
+const CommandRegistration kScoreCommandRegistration{
+    {"score", "Score a trial file against the expert and print the score and its parts (JSON)",
+     "skillcoach score --task writing trial.json", setup_score}};
 
 }  // namespace
 }  // namespace sc::cli

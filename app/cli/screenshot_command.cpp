@@ -21,7 +21,7 @@ struct ScreenshotOptions {
   TaskKind task = TaskKind::parking;
 };
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_screenshot(CLI::App& sub) {
   auto options = std::make_shared<ScreenshotOptions>();
   sub.add_option("--screen", options->screen, "Registered screen to render")->capture_default_str();
   sub.add_option("--out", options->out, "PNG file to write")->required();
@@ -42,9 +42,9 @@ CommandRunner setup(CLI::App& sub) {
   };
 }
 
-const CommandRegistration kReg{{"screenshot",
-                                "Render a screen offscreen to a PNG (SKILLCOACH_GL=osmesa|egl picks the backend)",
-                                "skillcoach screenshot --screen start --out start.png --size 1280x720", setup}};
+const CommandRegistration kScreenshotCommandRegistration{
+    {"screenshot", "Render a screen offscreen to a PNG (SKILLCOACH_GL=osmesa|egl picks the backend)",
+     "skillcoach screenshot --screen start --out start.png --size 1280x720", setup_screenshot}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -124,7 +124,7 @@ int run(const SegmentArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_segment(CLI::App& sub) {
   auto args = std::make_shared<SegmentArgs>();
   add_task_option(sub, args->task)->required();
   sub.add_option("--model", args->model,
@@ -135,8 +135,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"segment", "Split a trial into skills (JSON), optionally drawn by skill into a PNG",
-                                "skillcoach segment --task writing --png word.png trial.json", setup}};
+const CommandRegistration kSegmentCommandRegistration{
+    {"segment", "Split a trial into skills (JSON), optionally drawn by skill into a PNG",
+     "skillcoach segment --task writing --png word.png trial.json", setup_segment}};
 
 }  // namespace
 }  // namespace sc::cli

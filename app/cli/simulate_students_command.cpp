@@ -180,7 +180,7 @@ int run(const SimulateArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_simulate_students(CLI::App& sub) {
   auto args = std::make_shared<SimulateArgs>();
   sub.add_option("--seed", args->seed, "Seed of students, scenarios and fine-tuning data (default 0)")
       ->check(CLI::Validator(
@@ -216,9 +216,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"simulate-students",
-                                "Synthetic parking students fine-tuned on Ind. Drills vs Drills vs Full Trajectory",
-                                "skillcoach simulate-students --seed 0 --out-dir docs", setup}};
+const CommandRegistration kSimulateStudentsCommandRegistration{
+    {"simulate-students", "Synthetic parking students fine-tuned on Ind. Drills vs Drills vs Full Trajectory",
+     "skillcoach simulate-students --seed 0 --out-dir docs", setup_simulate_students}};
 
 }  // namespace
 }  // namespace sc::cli

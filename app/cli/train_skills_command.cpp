@@ -120,7 +120,7 @@ int run(const TrainArgs& args) {
   return 0;
 }
 
-CommandRunner setup(CLI::App& sub) {
+CommandRunner setup_train_skills(CLI::App& sub) {
   auto args = std::make_shared<TrainArgs>();
   sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
   sub.add_option("--data", args->data, "Folder of trial files to train on (default: generate expert demonstrations)");
@@ -146,9 +146,9 @@ CommandRunner setup(CLI::App& sub) {
   return [args] { return run(*args); };
 }
 
-const CommandRegistration kReg{{"train-skills", "Train a task's CompILE skill model on expert demonstrations",
-                                "skillcoach train-skills --task writing --seed 0 --out assets/models/writing.pt",
-                                setup}};
+const CommandRegistration kTrainSkillsCommandRegistration{
+    {"train-skills", "Train a task's CompILE skill model on expert demonstrations",
+     "skillcoach train-skills --task writing --seed 0 --out assets/models/writing.pt", setup_train_skills}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -1,7 +1,7 @@
 #pragma once
 // Screens of the trainer register themselves, like Box2D's samples: a file app/gui/screens/<name>_screen.cpp
 // defines a Screen subclass and one
-//   static const sc::ScreenRegistration kReg{{"free_drive", "Free drive",
+//   static const sc::ScreenRegistration kFreeDriveScreenRegistration{{"free_drive", "Free drive",
 //       [](sc::AppServices& services) { return std::make_unique<FreeDriveScreen>(services); }}};
 // and the navigator, `skillcoach screenshot --screen free_drive` and the golden tests all find it by name.
 //

@@ -9,8 +9,8 @@
 namespace sc::review_view {
 namespace {
 
-constexpr ImU32 kText = IM_COL32(236, 239, 244, 255);
-constexpr ImU32 kMuted = IM_COL32(160, 170, 185, 255);
+constexpr ImU32 kCaptionText = IM_COL32(236, 239, 244, 255);
+constexpr ImU32 kCaptionMuted = IM_COL32(160, 170, 185, 255);
 const Color kBackground = Color::hex(0x14181f);
 
 // One frame: the world through `paint` into the left `world_width` pixels, then ImGui text through `text`.
@@ -35,7 +35,7 @@ RgbaImage render(GlContext& context, int width, int height, Paint&& paint, Text&
 
 float text_lines(ImDrawList& dl, ImVec2 at, const std::vector<std::string>& lines, float wrap) {
   for (const auto& line : lines) {
-    dl.AddText(nullptr, 0.0f, at, kMuted, line.c_str(), nullptr, wrap);
+    dl.AddText(nullptr, 0.0f, at, kCaptionMuted, line.c_str(), nullptr, wrap);
     at.y += ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap).y + 4.0f;
   }
   return at.y;
@@ -58,32 +58,32 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         const float s = imgui.scale(), fs = ImGui::GetFontSize();
         const float x = world.width + 16.0f * s, wrap = panel - 28.0f * s;
         float y = 14.0f * s;
-        dl.AddText(imgui.fonts().bold, fs, {x, y}, kText, text.title.c_str(), nullptr, wrap);
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, text.title.c_str(), nullptr, wrap);
         y += imgui.fonts().bold->CalcTextSizeA(fs, 1e9f, wrap, text.title.c_str()).y + 8.0f * s;
         y = text_lines(dl, {x, y}, text.lines, wrap) + 8.0f * s;
         // What the lines mean, then one swatch per skill.
         const bool parking = picture.task == TaskKind::parking;
         dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, IM_COL32(255, 226, 138, 255), 5.0f * s);
-        dl.AddText({x + fs * 2.2f, y}, kText, "this trial, coloured by skill; dots: boundaries");
+        dl.AddText({x + fs * 2.2f, y}, kCaptionText, "this trial, coloured by skill; dots: boundaries");
         y += fs * 1.35f;
         if (picture.expert) {
           dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kExpertRibbon.with_alpha(0.8f)),
                      fs * 0.8f);
-          dl.AddText({x + fs * 2.2f, y}, kText, parking ? "expert's path (same scenario)" : "expert's pen path");
+          dl.AddText({x + fs * 2.2f, y}, kCaptionText, parking ? "expert's path (same scenario)" : "expert's pen path");
           y += fs * 1.35f;
         }
         if (picture.ghost) {
           for (int i = 0; i < 3; ++i)
             dl.AddLine({x + i * fs * 0.6f, y + fs * 0.5f}, {x + i * fs * 0.6f + fs * 0.35f, y + fs * 0.5f},
                        parking ? IM_COL32(255, 255, 255, 230) : IM_COL32(120, 140, 180, 255), 3.0f * s);
-          dl.AddText({x + fs * 2.2f, y}, kText, "drill's ghost path");
+          dl.AddText({x + fs * 2.2f, y}, kCaptionText, "drill's ghost path");
           y += fs * 1.35f;
         }
         y += 6.0f * s;
         for (const LegendEntry& e : text.legend) {
           dl.AddRectFilled({x, y + fs * 0.15f}, {x + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(e.skill), 3.0f);
           const std::string label = std::to_string(e.skill) + "  " + e.label;
-          dl.AddText(nullptr, 0.0f, {x + fs * 1.2f, y}, kText, label.c_str(), nullptr, wrap - fs * 1.2f);
+          dl.AddText(nullptr, 0.0f, {x + fs * 1.2f, y}, kCaptionText, label.c_str(), nullptr, wrap - fs * 1.2f);
           y += ImGui::CalcTextSize(label.c_str(), nullptr, false, wrap - fs * 1.2f).y + 4.0f * s;
         }
         const float plot_h = std::min(180.0f * s, static_cast<float>(height) - y - 24.0f * s);
@@ -110,17 +110,17 @@ RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture
         const float box_w = 470.0f * s;
         const float box_h = fs * (3.6f + 1.3f * static_cast<float>(lines.size()));
         dl.AddRectFilled({x - 8.0f * s, y - 6.0f * s}, {x + box_w, y + box_h}, IM_COL32(12, 15, 20, 200), 8.0f * s);
-        dl.AddText(imgui.fonts().bold, fs, {x, y}, kText, title.c_str());
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, title.c_str());
         y += fs * 1.4f;
         dl.AddLine({x, y + fs * 0.5f}, {x + fs * 1.6f, y + fs * 0.5f}, to_u32(kBefore), 4.0f * s);
         const std::string before = "before: " + std::to_string(picture.before.size()) +
                                    (picture.before.size() == 1 ? " pre-test trial" : " pre-test trials");
-        dl.AddText({x + fs * 2.2f, y}, kText, before.c_str());
+        dl.AddText({x + fs * 2.2f, y}, kCaptionText, before.c_str());
         const std::string after = "after: " + std::to_string(picture.after.size()) +
                                   (picture.after.size() == 1 ? " evaluation trial" : " evaluation trials");
         dl.AddLine({x + box_w * 0.5f, y + fs * 0.5f}, {x + box_w * 0.5f + fs * 1.6f, y + fs * 0.5f}, to_u32(kAfter),
                    4.0f * s);
-        dl.AddText({x + box_w * 0.5f + fs * 2.2f, y}, kText, after.c_str());
+        dl.AddText({x + box_w * 0.5f + fs * 2.2f, y}, kCaptionText, after.c_str());
         y += fs * 1.3f;
         text_lines(dl, {x, y}, lines, box_w - 16.0f * s);
       });
@@ -142,7 +142,7 @@ RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart&
       [&](ImGuiLayer& imgui) {
         ImDrawList& dl = *ImGui::GetBackgroundDrawList();
         const float scale = imgui.scale();
-        dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f * scale, 12.0f * scale}, kText,
+        dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f * scale, 12.0f * scale}, kCaptionText,
                    title.c_str());
         draw_expertise_chart(
             dl, {12.0f * scale, title_h * scale},

@@ -9,7 +9,7 @@ namespace {
 
 using test::run_skillcoach;
 
-Json json_of(const std::string& output) {
+Json report_json_of(const std::string& output) {
   const auto start = output.find("\n{");
   EXPECT_NE(start, std::string::npos) << output;
   return Json::parse(output.substr(start == std::string::npos ? 0 : start + 1));
@@ -19,7 +19,7 @@ TEST(EvaluateSkillsCommand, WritingReportsBoundaryScoresUsageAndReconstructionOn
   const auto r =
       run_skillcoach("evaluate-skills --task writing --count 10 --model " + test::tiny_model("writing").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Json d = json_of(r.output);
+  const Json d = report_json_of(r.output);
   EXPECT_EQ(d.at("seed"), 4);  // the model's seed (3) + 1: not its training data
   EXPECT_EQ(d.at("trajectories"), 10);
   const Json& b = d.at("boundaries");
@@ -37,11 +37,11 @@ TEST(EvaluateSkillsCommand, DetailsListEveryWordWithItsTrueBoundariesAndContiguo
   const auto plain =
       run_skillcoach("evaluate-skills --task writing --count 3 --model " + test::tiny_model("writing").string());
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
-  EXPECT_FALSE(json_of(plain.output).contains("demos"));
+  EXPECT_FALSE(report_json_of(plain.output).contains("demos"));
   const auto r = run_skillcoach("evaluate-skills --task writing --count 3 --details --model " +
                                 test::tiny_model("writing").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Json demos = json_of(r.output).at("demos");
+  const Json demos = report_json_of(r.output).at("demos");
   ASSERT_EQ(demos.size(), 3u);
   for (const Json& d : demos) {
     EXPECT_EQ(d.at("label").get<std::string>().size(), 8u) << d;  // an 8-symbol word
@@ -61,7 +61,7 @@ TEST(EvaluateSkillsCommand, ParkingReportsPurityPerSkill) {
   const auto r =
       run_skillcoach("evaluate-skills --task parking --count 4 --model " + test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Json d = json_of(r.output);
+  const Json d = report_json_of(r.output);
   ASSERT_FALSE(d.at("purity").at("per_skill").empty());
   for (const Json& p : d.at("purity").at("per_skill")) {
     EXPECT_NEAR(p.at("reversing").get<double>() + p.at("forward").get<double>(), 1.0, 1e-9);
@@ -74,7 +74,7 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
   const auto r = run_skillcoach("evaluate-skills --task parking --count 3 --realistic-drivers --model " +
                                 test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Json rows = json_of(r.output).at("realistic_drivers");
+  const Json rows = report_json_of(r.output).at("realistic_drivers");
   ASSERT_EQ(rows.size(), 8u);
   // 15 Hz input without noise or delay changes nothing a skill model sees, beyond the gamepad's dead zone.
   EXPECT_GE(rows[0].at("agreement").get<double>(), 0.9) << rows[0];
@@ -101,7 +101,7 @@ TEST(EvaluateSkillsCommand, RefusesTheTrainingSeedAndAModelOfAnotherTask) {
 TEST(EvaluateSkillsCommand, TimeHeuristicIsScoredAsTheBaselineWithoutAModel) {
   const auto r = run_skillcoach("evaluate-skills --task writing --count 4 --time-heuristic --details");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const Json d = json_of(r.output);
+  const Json d = report_json_of(r.output);
   EXPECT_EQ(d.at("extractor"), "time-heuristic (8 equal segments)");
   EXPECT_EQ(d.at("seed"), 1);
   EXPECT_FALSE(d.contains("action_reconstruction_error"));

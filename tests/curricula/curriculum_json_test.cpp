@@ -8,16 +8,16 @@
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<std::pair<int, int>>& parts) { return test::segments_of(parts); }
+Segmentation segmentation_of(const std::vector<std::pair<int, int>>& parts) { return test::segments_of(parts); }
 
 TEST(CurriculumJson, RoundTripsEveryCondition) {
   CurriculumInputs in;
   for (int i = 0; i < 6; ++i) {
-    in.expert_skills.push_back(seq({{i % 3, 4 + i}, {3, 5}, {4, 2 + i}}));
+    in.expert_skills.push_back(segmentation_of({{i % 3, 4 + i}, {3, 5}, {4, 2 + i}}));
     const int t = 11 + 2 * i;
     in.expert_time_slices.push_back(Segmentation{{{0, 0, t / 3}, {1, t / 3, 2 * t / 3}, {2, 2 * t / 3, t}}});
   }
-  in.pretest = estimate_expertise({{0, in.expert_skills[0], seq({{3, 5}}), -0.4}}, 5, 7);
+  in.pretest = estimate_expertise({{0, in.expert_skills[0], segmentation_of({{3, 5}}), -0.4}}, 5, 7);
   for (StudyCondition c : kAllStudyConditions) {
     const Curriculum cur = make_curriculum(c, in, CurriculumConfig::parking());
     const Json doc = curriculum_to_json(cur);

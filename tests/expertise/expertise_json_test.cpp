@@ -8,11 +8,12 @@
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 2); }
+Segmentation segmentation_of(const std::vector<int>& skills) { return test::segments_of(skills, 2); }
 
 TEST(ExpertiseJson, RoundTrips) {
-  const ExpertiseEstimate e =
-      estimate_expertise({{3, seq({0, 1, 2, 1}), seq({2}), -0.75}, {5, seq({2, 3}), seq({2, 3}), -0.1}}, 5, 2);
+  const ExpertiseEstimate e = estimate_expertise({{3, segmentation_of({0, 1, 2, 1}), segmentation_of({2}), -0.75},
+                                                  {5, segmentation_of({2, 3}), segmentation_of({2, 3}), -0.1}},
+                                                 5, 2);
   const Json doc = expertise_to_json(e);
   EXPECT_EQ(doc["targets"], Json({0, 1}));  // E_0 = -0.75, E_1 = -0.75/2 - 0.75/4
   EXPECT_EQ(doc["contributions"][1][1]["position"], 4);
@@ -25,7 +26,7 @@ TEST(ExpertiseJson, RoundTrips) {
 }
 
 TEST(ExpertiseJson, BadDocumentsNameThePath) {
-  Json doc = expertise_to_json(estimate_expertise({{0, seq({0, 1}), seq({}), -1.0}}, 2, 2));
+  Json doc = expertise_to_json(estimate_expertise({{0, segmentation_of({0, 1}), segmentation_of({}), -1.0}}, 2, 2));
   doc["ranking"][0] = 9;
   try {
     expertise_from_json(JsonView(doc, "diag.json"));
@@ -33,7 +34,7 @@ TEST(ExpertiseJson, BadDocumentsNameThePath) {
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("diag.json: $.ranking[0]"), std::string::npos) << err.what();
   }
-  doc = expertise_to_json(estimate_expertise({{0, seq({0, 1}), seq({}), -1.0}}, 2, 2));
+  doc = expertise_to_json(estimate_expertise({{0, segmentation_of({0, 1}), segmentation_of({}), -1.0}}, 2, 2));
   doc["occurrences"].push_back(1);
   EXPECT_THROW(expertise_from_json(JsonView(doc, "diag.json")), InputError);
 }

@@ -8,15 +8,18 @@
 namespace sc {
 namespace {
 
-Segmentation seq(const std::vector<int>& skills) { return test::segments_of(skills, 2); }
+Segmentation two_step_segments(const std::vector<int>& skills) { return test::segments_of(skills, 2); }
 
 TEST(LatestEvidenceExpertise, NewerEvidenceReplacesOlderPerSkill) {
   // Pre-test: skill 0 missed (weakest), skill 1 missed later in the sequence, skill 2 fine.
   const ExpertiseEstimate pretest =
-      estimate_expertise({{0, seq({0, 1, 2}), seq({2}), -1.0}, {1, seq({1, 2}), seq({1, 2}), -1.0}}, 4, 4);
+      estimate_expertise({{0, two_step_segments({0, 1, 2}), two_step_segments({2}), -1.0},
+                          {1, two_step_segments({1, 2}), two_step_segments({1, 2}), -1.0}},
+                         4, 4);
   EXPECT_EQ(pretest.ranking.front(), 0);
   // Practice round: skill 0 now performed, skill 2 missed; skill 1 not practised.
-  const ExpertiseEstimate practice = estimate_expertise({{0, seq({0, 2}), seq({0}), -0.8}}, 4, 4);
+  const ExpertiseEstimate practice =
+      estimate_expertise({{0, two_step_segments({0, 2}), two_step_segments({0}), -0.8}}, 4, 4);
   const ExpertiseEstimate merged = latest_evidence_expertise({pretest, practice}, 4);
   EXPECT_EQ(merged.expertise[0], 0.0);              // latest: practised without a miss
   EXPECT_DOUBLE_EQ(merged.expertise[1], -0.5 / 2);  // kept from the pre-test, per occurrence (2)
@@ -27,7 +30,8 @@ TEST(LatestEvidenceExpertise, NewerEvidenceReplacesOlderPerSkill) {
 }
 
 TEST(LatestEvidenceExpertise, SingleRoundKeepsTheOrderOfMeans) {
-  const ExpertiseEstimate only = estimate_expertise({{0, seq({0, 1}), seq({}), -1.0}}, 2, 2);
+  const ExpertiseEstimate only =
+      estimate_expertise({{0, two_step_segments({0, 1}), two_step_segments({}), -1.0}}, 2, 2);
   const ExpertiseEstimate merged = latest_evidence_expertise({only}, 1);
   EXPECT_EQ(merged.targets, (std::vector<int>{0}));
   EXPECT_TRUE(latest_evidence_expertise({}, 3).ranking.empty());

@@ -20,7 +20,7 @@ using test::fresh_dir;
 using test::sample_session;
 using test::sample_trial;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool mentions(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // Every trial of the session is there, in order, with its trajectory intact.
 void expect_trials(const LearnerStore& store, std::int64_t session_id, int count) {
@@ -61,9 +61,9 @@ TEST(LearnerStoreFaults, DiskFullKeepsEveryRecordAndTheNextStoreSavesIt) {
     const auto first = store.record_trial(sample_trial(id, 1));
     EXPECT_FALSE(first.stored);
     EXPECT_EQ(first.pending, 1u);
-    EXPECT_TRUE(contains(first.message, store.database_path().string() + ": 1 record not saved yet")) << first.message;
-    EXPECT_TRUE(contains(first.message, "the disk or the database is full")) << first.message;
-    EXPECT_TRUE(contains(first.message, "kept in memory and in " + store.spill_path().string())) << first.message;
+    EXPECT_TRUE(mentions(first.message, store.database_path().string() + ": 1 record not saved yet")) << first.message;
+    EXPECT_TRUE(mentions(first.message, "the disk or the database is full")) << first.message;
+    EXPECT_TRUE(mentions(first.message, "kept in memory and in " + store.spill_path().string())) << first.message;
     EXPECT_EQ(first.message.find('\n'), std::string::npos);
     ASSERT_TRUE(std::filesystem::exists(store.spill_path()));
     EXPECT_EQ(read_spill_file(store.spill_path()).size(), 1u);
@@ -106,7 +106,7 @@ TEST(LearnerStoreFaults, FileSizeLimitFailsWritesUntilLifted) {
     setrlimit(RLIMIT_FSIZE, &limit);
     const auto blocked = store.record_trial(sample_trial(id, 1));
     EXPECT_FALSE(blocked.stored);
-    EXPECT_TRUE(contains(blocked.message, "not saved yet")) << blocked.message;
+    EXPECT_TRUE(mentions(blocked.message, "not saved yet")) << blocked.message;
     setrlimit(RLIMIT_FSIZE, &original);
     const auto next = store.record_trial(sample_trial(id, 2));  // retried on the next write
     EXPECT_TRUE(next.stored) << next.message;
@@ -134,7 +134,7 @@ TEST(LearnerStoreFaults, ReadOnlyDatabaseFileKeepsTrialsUntilWritable) {
         EXPECT_FALSE(store.writable());
         const auto result = store.record_trial(sample_trial(id, 1));
         EXPECT_FALSE(result.stored);
-        EXPECT_TRUE(contains(result.message, "read-only")) << result.message;
+        EXPECT_TRUE(mentions(result.message, "read-only")) << result.message;
         EXPECT_TRUE(std::filesystem::exists(store.spill_path()));
         EXPECT_FALSE(store.flush().stored);
         std::filesystem::permissions(db, std::filesystem::perms::owner_write, std::filesystem::perm_options::add);
@@ -168,7 +168,7 @@ TEST(LearnerStoreFaults, ReadOnlyDirectoryKeepsTrialsInMemoryUntilWritable) {
         const auto result = store.record_trial(sample_trial(id, 1));
         EXPECT_FALSE(result.stored);
         // Even the spill file cannot be written: the message says the trial is only in memory.
-        EXPECT_TRUE(contains(result.message, "kept in memory only")) << result.message;
+        EXPECT_TRUE(mentions(result.message, "kept in memory only")) << result.message;
         std::filesystem::permissions(dir, perms::owner_all);
         const auto next = store.record_trial(sample_trial(id, 2));
         EXPECT_TRUE(next.stored) << next.message;
@@ -190,7 +190,7 @@ TEST(LearnerStoreFaults, LockedDatabaseQueuesInOrderAndCatchesUp) {
     other.exec("BEGIN IMMEDIATE");  // another process holds the write lock
     const auto first = store.record_trial(sample_trial(id, 1));
     EXPECT_FALSE(first.stored);
-    EXPECT_TRUE(contains(first.message, "locked by another program")) << first.message;
+    EXPECT_TRUE(mentions(first.message, "locked by another program")) << first.message;
     EXPECT_EQ(store.record_trial(sample_trial(id, 2)).pending, 2u);
     // Reading still works while locked (WAL).
     EXPECT_EQ(store.trials_of_session(id).size(), 1u);
@@ -212,9 +212,9 @@ TEST(LearnerStoreFaults, ADataDirectoryWeMayNotReachIsOneLine) {
       [&] {
         const auto data = dir / "locked" / "data";
         const auto trainer = test::error_of([&] { LearnerStore store(data); });
-        EXPECT_TRUE(contains(trainer, "Permission denied")) << trainer;
+        EXPECT_TRUE(mentions(trainer, "Permission denied")) << trainer;
         const auto review = test::error_of([&] { LearnerStore store(data, StoreOptions{.read_only = true}); });
-        EXPECT_TRUE(contains(review, data.string() + "/skillcoach.db: cannot be read: Permission denied")) << review;
+        EXPECT_TRUE(mentions(review, data.string() + "/skillcoach.db: cannot be read: Permission denied")) << review;
         return 0;
       },
       /*as_nobody=*/true);
@@ -239,8 +239,8 @@ TEST(LearnerStoreFaults, ATrialNumberTakenByAnotherTrialIsNotReportedStored) {
   }
   const auto clash = store.record_trial(sample_trial(id, 1));
   EXPECT_FALSE(clash.stored);
-  EXPECT_TRUE(contains(clash.message, "trial 2 of session 1 is already a different trial")) << clash.message;
-  EXPECT_TRUE(contains(clash.message, "retrying cannot help")) << clash.message;
+  EXPECT_TRUE(mentions(clash.message, "trial 2 of session 1 is already a different trial")) << clash.message;
+  EXPECT_TRUE(mentions(clash.message, "retrying cannot help")) << clash.message;
   EXPECT_EQ(read_spill_file(store.spill_path()).size(), 1u);
   // Once the other trial is gone, the pending one is stored under its number.
   SqliteDb(store.database_path(), SqliteDb::Mode::ReadWriteCreate).exec("DELETE FROM trials WHERE seq = 2");
@@ -256,8 +256,8 @@ TEST(LearnerStoreFaults, AMissingTableIsNotCalledRetryable) {
   SqliteDb(store.database_path(), SqliteDb::Mode::ReadWriteCreate).exec("DROP TABLE drills");
   const auto result = store.save_curriculum({id, 1, "adaptive", "[]", {{0, "[0]", "{}"}}, "t"});
   EXPECT_FALSE(result.stored);
-  EXPECT_TRUE(contains(result.message, "no such table: drills")) << result.message;
-  EXPECT_FALSE(contains(result.message, "will retry")) << result.message;
+  EXPECT_TRUE(mentions(result.message, "no such table: drills")) << result.message;
+  EXPECT_FALSE(mentions(result.message, "will retry")) << result.message;
   EXPECT_TRUE(store.pending_spilled());
 }
 
@@ -267,8 +267,8 @@ TEST(LearnerStoreFaults, UnreadableSpillFileIsMovedAsideNotOverwritten) {
   const auto spill = dir / "skillcoach.db.pending.json";
   test::write_bytes(spill, "{\"format\": \"skillcoach-pending-writes\", \"writes\": [");
   LearnerStore store(dir);
-  EXPECT_TRUE(contains(store.open_message(), spill.string() + ": not valid JSON")) << store.open_message();
-  EXPECT_TRUE(contains(store.open_message(), "moved to " + spill.string() + ".unreadable")) << store.open_message();
+  EXPECT_TRUE(mentions(store.open_message(), spill.string() + ": not valid JSON")) << store.open_message();
+  EXPECT_TRUE(mentions(store.open_message(), "moved to " + spill.string() + ".unreadable")) << store.open_message();
   EXPECT_FALSE(std::filesystem::exists(spill));
   EXPECT_EQ(test::file_bytes(spill.string() + ".unreadable"),
             "{\"format\": \"skillcoach-pending-writes\", \"writes\": [");

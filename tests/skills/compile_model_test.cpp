@@ -17,7 +17,7 @@
 namespace sc {
 namespace {
 
-std::filesystem::path scratch(const std::string& name) { return test::scratch_path("compile_model_test", name); }
+std::filesystem::path model_scratch(const std::string& name) { return test::scratch_path("compile_model_test", name); }
 
 std::vector<StepSequence> data() {
   std::vector<StepSequence> out;
@@ -33,7 +33,7 @@ std::filesystem::path trained_model() {
   c.latent_size = 5;
   c.iterations = 2;
   c.batch_size = 6;
-  const auto path = scratch("model.scm");
+  const auto path = model_scratch("model.scm");
   ModelProvenance prov;
   prov.data_description = "12 synthetic sequences";
   prov.git_revision = "abc123";
@@ -77,8 +77,8 @@ TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
     }
   }
   // Saving the loaded model reproduces the file byte for byte.
-  again.save(scratch("resaved.scm"));
-  EXPECT_EQ(test::read_bytes(path), test::read_bytes(scratch("resaved.scm")));
+  again.save(model_scratch("resaved.scm"));
+  EXPECT_EQ(test::read_bytes(path), test::read_bytes(model_scratch("resaved.scm")));
 
   const Json sidecar = read_json_file(model_sidecar_path(path));
   EXPECT_EQ(sidecar.at("format_version"), kModelFormatVersion);
@@ -97,18 +97,18 @@ TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
   const auto path = trained_model();
   const std::string good = test::read_bytes(path);
 
-  expect_load_error(scratch("missing.scm"), "no such model file");
-  const auto truncated = scratch("truncated.scm");
+  expect_load_error(model_scratch("missing.scm"), "no such model file");
+  const auto truncated = model_scratch("truncated.scm");
   test::write_bytes(truncated, good.substr(0, good.size() - 100));
   expect_load_error(truncated, "checksum");
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-  const auto corrupt = scratch("corrupt.scm");
+  const auto corrupt = model_scratch("corrupt.scm");
   test::write_bytes(corrupt, flipped);
   expect_load_error(corrupt, "corrupt");
   std::string newer = good;
   newer[8] = static_cast<char>(kModelFormatVersion + 1);
-  const auto future = scratch("future.scm");
+  const auto future = model_scratch("future.scm");
   test::write_bytes(future, newer);
   expect_load_error(future, "newer than this program supports");
 
@@ -119,12 +119,12 @@ TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
   // A well-formed file whose config does not match its tensors (e.g. edited by hand).
   ModelFileContents contents = read_model_file(path);
   contents.header["config"]["latent_size"] = 9;
-  const auto mismatched = scratch("mismatched.scm");
+  const auto mismatched = model_scratch("mismatched.scm");
   write_model_file(mismatched, contents);
   expect_load_error(mismatched, "wrong dimensions");
   contents = read_model_file(path);
   contents.header["format"] = "something-else";
-  const auto foreign = scratch("foreign.scm");
+  const auto foreign = model_scratch("foreign.scm");
   write_model_file(foreign, contents);
   expect_load_error(foreign, "not a CompILE model");
 }

@@ -13,20 +13,20 @@
 namespace sc {
 namespace {
 
-const ParkingKit& kit() {
+const ParkingKit& projector_kit() {
   static const ParkingKit k(std::make_shared<TimeHeuristicExtractor>(3), "",
                             ParkingKitOptions{{}, ParkingPoolOptions{6, 21}});
   return k;
 }
 
 ParkingTrial expert(int i) {
-  return parse_parking_trial(kit().expert_pool()[static_cast<std::size_t>(i)].trial, "pool");
+  return parse_parking_trial(projector_kit().expert_pool()[static_cast<std::size_t>(i)].trial, "pool");
 }
 
 // Slice k (of the time heuristic's 3) of expert e as a drill segment.
 DrillSegment slice(int e, int k) {
   const SkillSegment s =
-      kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
+      projector_kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
   return {s.skill, e, s.begin, s.end};
 }
 
@@ -40,7 +40,7 @@ DrillPlan plan_of(std::vector<DrillSegment> segments) {
 TEST(ParkingDrillProjector, WholeExpertTrajectoryReproducesTheExpert) {
   const ParkingTrial e = expert(2);
   const int t = static_cast<int>(e.actions.size());
-  const PlayableDrill d = kit().projector().project(plan_of({{0, 2, 0, t}}));
+  const PlayableDrill d = projector_kit().projector().project(plan_of({{0, 2, 0, t}}));
   ASSERT_EQ(d.steps.length(), t);
   ASSERT_EQ(d.ghost_path.size(), e.states.size());
   for (std::size_t i = 0; i < e.states.size(); ++i) {
@@ -53,7 +53,7 @@ TEST(ParkingDrillProjector, WholeExpertTrajectoryReproducesTheExpert) {
 
 TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsGhost) {
   const DrillPlan plan = plan_of({slice(0, 1), slice(3, 2), slice(4, 0)});
-  const PlayableDrill d = kit().projector().project(plan);
+  const PlayableDrill d = projector_kit().projector().project(plan);
   // Initial state: the first segment's expert state (position in metres).
   // A copy: expert() returns a temporary (a reference into it dangled; found by AddressSanitizer).
   const ParkingObservation s0 = expert(0).states[static_cast<std::size_t>(plan.segments[0].begin)];
@@ -77,7 +77,7 @@ TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsG
     EXPECT_LE(step, 0.2 * std::max(speed(i - 1), speed(i)) + 1e-3) << "step " << i;
   }
   // The drill trial, replayed in a fresh ParkingSim, gives exactly the ghost states and the drill's score.
-  const ParkingTrial trial = parse_parking_trial(kit().drill_trial(d), "drill");
+  const ParkingTrial trial = parse_parking_trial(projector_kit().drill_trial(d), "drill");
   ASSERT_TRUE(trial.scenario.start.has_value());
   EXPECT_EQ(trial.source, "drill");
   EXPECT_EQ(trial.scenario.goal_spot, expert(4).scenario.goal_spot);  // the last segment's goal
@@ -89,7 +89,7 @@ TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsG
   }
   EXPECT_DOUBLE_EQ(replay.rewards.back(), d.drill_return);
   EXPECT_EQ(replay.success, d.success);
-  EXPECT_DOUBLE_EQ(kit().drill_attempt_reward(d, kit().drill_trial(d)), d.drill_return);
+  EXPECT_DOUBLE_EQ(projector_kit().drill_attempt_reward(d, projector_kit().drill_trial(d)), d.drill_return);
   // Segment starts are the plan's prefix sums (clipped when the car parked early).
   ASSERT_EQ(d.segment_starts.size(), 3u);
   EXPECT_EQ(d.segment_starts[0], 0);
@@ -98,22 +98,22 @@ TEST(ParkingDrillProjector, StitchedDrillStartsAtTheFirstSegmentAndReplaysToItsG
 
 TEST(ParkingDrillProjector, SameSegmentsSameDrill) {
   const DrillPlan plan = plan_of({slice(1, 0), slice(5, 1)});
-  const PlayableDrill a = kit().projector().project(plan);
-  const PlayableDrill b = kit().projector().project(plan);
+  const PlayableDrill a = projector_kit().projector().project(plan);
+  const PlayableDrill b = projector_kit().projector().project(plan);
   EXPECT_EQ(a.ghost_path, b.ghost_path);
   EXPECT_EQ(a.steps.states, b.steps.states);
   EXPECT_EQ(a.drill_return, b.drill_return);
 }
 
 TEST(ParkingDrillProjector, AttemptInAnotherScenarioIsRejected) {
-  const PlayableDrill d = kit().projector().project(plan_of({slice(1, 0), slice(2, 1)}));
-  EXPECT_THROW(kit().drill_attempt_reward(d, kit().expert_pool()[0].trial), InputError);
+  const PlayableDrill d = projector_kit().projector().project(plan_of({slice(1, 0), slice(2, 1)}));
+  EXPECT_THROW(projector_kit().drill_attempt_reward(d, projector_kit().expert_pool()[0].trial), InputError);
 }
 
 TEST(ParkingDrillProjector, BadPlansAreInputErrors) {
-  EXPECT_THROW(kit().projector().project(DrillPlan{}), InputError);
-  EXPECT_THROW(kit().projector().project(plan_of({{0, 9, 0, 2}})), InputError);
-  EXPECT_THROW(kit().projector().project(plan_of({{0, 0, 0, 500}})), InputError);
+  EXPECT_THROW(projector_kit().projector().project(DrillPlan{}), InputError);
+  EXPECT_THROW(projector_kit().projector().project(plan_of({{0, 9, 0, 2}})), InputError);
+  EXPECT_THROW(projector_kit().projector().project(plan_of({{0, 0, 0, 500}})), InputError);
 }
 
 }  // namespace

@@ -12,19 +12,20 @@
 namespace sc {
 namespace {
 
-const WritingKit& kit() {
+const WritingKit& writing_projector_kit() {
   static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "",
                             WritingKitOptions{{}, writing::AlphabetKind::Classic, 5, 9});
   return k;
 }
 
-DrillSegment slice(int e, int k) {
-  const SkillSegment s =
-      kit().expert_pool()[static_cast<std::size_t>(e)].time_slices.segments[static_cast<std::size_t>(k)];
+DrillSegment writing_slice(int e, int k) {
+  const SkillSegment s = writing_projector_kit()
+                             .expert_pool()[static_cast<std::size_t>(e)]
+                             .time_slices.segments[static_cast<std::size_t>(k)];
   return {s.skill, e, s.begin, s.end};
 }
 
-DrillPlan plan_of(std::vector<DrillSegment> segments, int repetitions = 1) {
+DrillPlan writing_plan_of(std::vector<DrillSegment> segments, int repetitions = 1) {
   DrillPlan p;
   for (const auto& s : segments) p.ngram.push_back(s.skill);
   std::vector<DrillSegment> all;
@@ -35,8 +36,8 @@ DrillPlan plan_of(std::vector<DrillSegment> segments, int repetitions = 1) {
 }
 
 TEST(WritingDrillProjector, SegmentsAreChainedWithoutJumpsAndKeepTheirMoves) {
-  const DrillPlan plan = plan_of({slice(0, 2), slice(3, 5)}, 3);
-  const PlayableDrill d = kit().projector().project(plan);
+  const DrillPlan plan = writing_plan_of({writing_slice(0, 2), writing_slice(3, 5)}, 3);
+  const PlayableDrill d = writing_projector_kit().projector().project(plan);
   ASSERT_EQ(d.steps.length(), plan.length());
   ASSERT_EQ(d.ghost_path.size(), static_cast<std::size_t>(plan.length()) + 1);
   // Every ghost step is exactly the expert's pen move (1-px steps after infill): no jump anywhere.
@@ -58,9 +59,9 @@ TEST(WritingDrillProjector, SegmentsAreChainedWithoutJumpsAndKeepTheirMoves) {
 }
 
 TEST(WritingDrillProjector, DrillStartsWhereItsFirstSegmentStartsWhenThatFits) {
-  const DrillPlan plan = plan_of({slice(1, 0), slice(2, 1)});
-  const PlayableDrill d = kit().projector().project(plan);
-  const StepSequence& e = kit().expert_pool()[1].steps;
+  const DrillPlan plan = writing_plan_of({writing_slice(1, 0), writing_slice(2, 1)});
+  const PlayableDrill d = writing_projector_kit().projector().project(plan);
+  const StepSequence& e = writing_projector_kit().expert_pool()[1].steps;
   EXPECT_NEAR(d.ghost_path[0][0], e.states[0], 1e-6);  // slice 0 starts at the word's start (0, 150)
   EXPECT_NEAR(d.ghost_path[0][1], e.states[1], 1e-6);
 }
@@ -79,7 +80,7 @@ TEST(WritingDrillProjector, PathLeavingTheCanvasIsShiftedInsideAndPenFlagsAreKep
     e.actions.insert(e.actions.end(), {lifted ? 0.0f : 1.0f, lifted ? -1.0f : 0.0f, lifted ? 0.0f : 1.0f});
   }
   const WritingDrillProjector projector({e});
-  DrillPlan plan = plan_of({{0, 0, 0, 100}});
+  DrillPlan plan = writing_plan_of({{0, 0, 0, 100}});
   const PlayableDrill d = projector.project(plan);
   double max_x = 0, min_y = 1e9;
   for (const auto& p : d.ghost_path) {
@@ -97,22 +98,23 @@ TEST(WritingDrillProjector, PathLeavingTheCanvasIsShiftedInsideAndPenFlagsAreKep
 }
 
 TEST(WritingDrillProjector, DrillTrialIsAPlayableWritingTrialOfTheGhost) {
-  const PlayableDrill d = kit().projector().project(plan_of({slice(0, 3), slice(4, 4)}, 3));
-  const Json doc = kit().drill_trial(d);
+  const PlayableDrill d =
+      writing_projector_kit().projector().project(writing_plan_of({writing_slice(0, 3), writing_slice(4, 4)}, 3));
+  const Json doc = writing_projector_kit().drill_trial(d);
   const writing::WritingTrial trial = writing::parse_writing_trial(doc, "drill");
   EXPECT_EQ(trial.source, "drill");
   EXPECT_FALSE(trial.scenario.word.empty());
   ASSERT_EQ(trial.points.size(), d.ghost_path.size());
   EXPECT_DOUBLE_EQ(trial.points.back().x, d.ghost_path.back()[0]);
-  EXPECT_NEAR(kit().drill_attempt_reward(d, doc), 0.0, 1e-12);
+  EXPECT_NEAR(writing_projector_kit().drill_attempt_reward(d, doc), 0.0, 1e-12);
   writing::WritingTrial shifted = trial;
   for (auto& p : shifted.points) p.y += 30.0;
-  EXPECT_LT(kit().drill_attempt_reward(d, writing::writing_trial_json(shifted)), -0.9);
+  EXPECT_LT(writing_projector_kit().drill_attempt_reward(d, writing::writing_trial_json(shifted)), -0.9);
 }
 
 TEST(WritingDrillProjector, BadPlansAreInputErrors) {
-  EXPECT_THROW(kit().projector().project(DrillPlan{}), InputError);
-  EXPECT_THROW(kit().projector().project(plan_of({{0, 7, 0, 2}})), InputError);
+  EXPECT_THROW(writing_projector_kit().projector().project(DrillPlan{}), InputError);
+  EXPECT_THROW(writing_projector_kit().projector().project(writing_plan_of({{0, 7, 0, 2}})), InputError);
 }
 
 }  // namespace

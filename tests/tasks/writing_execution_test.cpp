@@ -20,7 +20,7 @@ StepSequence pen_line(int n, double y0) {
   return s;
 }
 
-StepAlignment diagonal(int n) {
+StepAlignment writing_diagonal(int n) {
   StepAlignment path;
   for (int t = 0; t < n; ++t) path.push_back({t, t});
   return path;
@@ -28,10 +28,13 @@ StepAlignment diagonal(int n) {
 
 TEST(WritingExecution, InkWithinTheToleranceScoresZeroAndBeyondTheCutoffMinusOne) {
   const StepSequence expert = pen_line(20, 50.0);
-  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, expert, diagonal(20), 5, 15), 0.0);
-  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 52.0), diagonal(20), 5, 15), 0.0);   // 2 px <= 3
-  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 60.0), diagonal(20), 5, 15), -1.0);  // 10 px >= 8
-  const double half = writing_execution_reward(expert, pen_line(20, 55.5), diagonal(20), 5, 15);  // 5.5 px: credit 1/2
+  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, expert, writing_diagonal(20), 5, 15), 0.0);
+  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 52.0), writing_diagonal(20), 5, 15),
+                   0.0);  // 2 px <= 3
+  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 60.0), writing_diagonal(20), 5, 15),
+                   -1.0);  // 10 px >= 8
+  const double half =
+      writing_execution_reward(expert, pen_line(20, 55.5), writing_diagonal(20), 5, 15);  // 5.5 px: credit 1/2
   EXPECT_NEAR(half, 0.25 - 1.0, 1e-6);
 }
 

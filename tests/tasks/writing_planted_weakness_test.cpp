@@ -7,7 +7,7 @@
 namespace sc {
 namespace {
 
-const ClassicDrawerGlyphs& glyphs() {
+const ClassicDrawerGlyphs& classic_glyphs() {
   static const ClassicDrawerGlyphs g = ClassicDrawerGlyphs::load();
   return g;
 }
@@ -21,19 +21,19 @@ std::size_t common_prefix(const writing::WritingTrial& a, const writing::Writing
 
 TEST(WritingPlantedWeakness, EachFaultChangesItsLetterOnly) {
   const std::string word = "ct-b^e";  // 'b' starts after c, t and '-'
-  const writing::WritingTrial plain = planted_trial(glyphs(), word, {'b', LetterFault::None, 4}, 0);
-  EXPECT_EQ(plain.points, planted_trial(glyphs(), word, {'b', LetterFault::None, 4}, 0).points);  // seeded
+  const writing::WritingTrial plain = planted_trial(classic_glyphs(), word, {'b', LetterFault::None, 4}, 0);
+  EXPECT_EQ(plain.points, planted_trial(classic_glyphs(), word, {'b', LetterFault::None, 4}, 0).points);  // seeded
   EXPECT_EQ(plain.scenario.word, word);
   for (LetterFault fault : {LetterFault::Distorted, LetterFault::OtherDrawer, LetterFault::StraightLine}) {
-    const writing::WritingTrial bad = planted_trial(glyphs(), word, {'b', fault, 4}, 0);
+    const writing::WritingTrial bad = planted_trial(classic_glyphs(), word, {'b', fault, 4}, 0);
     const std::size_t same = common_prefix(plain, bad);
     EXPECT_LT(same, bad.points.size()) << to_string(fault);
     // c, t and '-' come before 'b': about half the word's ink, so well over a third of the points agree.
     EXPECT_GT(same, plain.points.size() / 3) << to_string(fault);
   }
   // A letter the word does not contain leaves the trace as it is.
-  EXPECT_EQ(planted_trial(glyphs(), word, {'a', LetterFault::StraightLine, 4}, 0).points,
-            planted_trial(glyphs(), word, {'a', LetterFault::None, 4}, 0).points);
+  EXPECT_EQ(planted_trial(classic_glyphs(), word, {'a', LetterFault::StraightLine, 4}, 0).points,
+            planted_trial(classic_glyphs(), word, {'a', LetterFault::None, 4}, 0).points);
 }
 
 }  // namespace

@@ -303,8 +303,9 @@ class FreeDriveScreen final : public Screen {
   int ticks_per_substep_ = 4;
 };
 
-const ScreenRegistration kReg{{"free_drive", "Free drive: any parking scenario, any device",
-                               [](AppServices& services) { return std::make_unique<FreeDriveScreen>(services); }}};
+const ScreenRegistration kFreeDriveScreenRegistration{
+    {"free_drive", "Free drive: any parking scenario, any device",
+     [](AppServices& services) { return std::make_unique<FreeDriveScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

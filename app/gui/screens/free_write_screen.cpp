@@ -215,8 +215,9 @@ class FreeWriteScreen final : public Screen {
   std::optional<double> ghost_start_;  // screen time when "Show the expert" was pressed
 };
 
-const ScreenRegistration kReg{{"free_write", "Free write: write a word with the mouse or trackpad",
-                               [](AppServices& services) { return std::make_unique<FreeWriteScreen>(services); }}};
+const ScreenRegistration kFreeWriteScreenRegistration{
+    {"free_write", "Free write: write a word with the mouse or trackpad",
+     [](AppServices& services) { return std::make_unique<FreeWriteScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

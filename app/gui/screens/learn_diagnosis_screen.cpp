@@ -146,8 +146,9 @@ class LearnDiagnosisScreen final : public Screen {
   bool confirm_ = false;
 };
 
-const ScreenRegistration kReg{{"learn_diagnosis", "Trainer: analysis progress and per-skill diagnosis",
-                               [](AppServices& services) { return std::make_unique<LearnDiagnosisScreen>(services); }}};
+const ScreenRegistration kLearnDiagnosisScreenRegistration{
+    {"learn_diagnosis", "Trainer: analysis progress and per-skill diagnosis",
+     [](AppServices& services) { return std::make_unique<LearnDiagnosisScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

@@ -162,9 +162,9 @@ class LearnInstructionsScreen final : public Screen {
   bool confirm_ = false;
 };
 
-const ScreenRegistration kReg{{"learn_instructions", "Trainer: illustrated instructions", [](AppServices& services) {
-                                 return std::make_unique<LearnInstructionsScreen>(services);
-                               }}};
+const ScreenRegistration kLearnInstructionsScreenRegistration{
+    {"learn_instructions", "Trainer: illustrated instructions",
+     [](AppServices& services) { return std::make_unique<LearnInstructionsScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

@@ -122,8 +122,9 @@ class LearnSummaryScreen final : public Screen {
   bool confirm_ = false;
 };
 
-const ScreenRegistration kReg{{"learn_summary", "Trainer: round summary, before/after, another round",
-                               [](AppServices& services) { return std::make_unique<LearnSummaryScreen>(services); }}};
+const ScreenRegistration kLearnSummaryScreenRegistration{
+    {"learn_summary", "Trainer: round summary, before/after, another round",
+     [](AppServices& services) { return std::make_unique<LearnSummaryScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

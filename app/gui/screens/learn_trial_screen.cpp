@@ -236,11 +236,13 @@ class LearnParkingTrialScreen final : public Screen {
   std::string started_;
 };
 
-const ScreenRegistration kReg{{"learn_trial", "Trainer: pre-test, drill demo and practice, evaluation trial",
-                               [](AppServices& services) -> std::unique_ptr<Screen> {
-                                 if (services.task == TaskKind::writing) return make_learn_write_trial_screen(services);
-                                 return std::make_unique<LearnParkingTrialScreen>(services);
-                               }}};
+const ScreenRegistration kLearnTrialScreenRegistration{{"learn_trial",
+                                                        "Trainer: pre-test, drill demo and practice, evaluation trial",
+                                                        [](AppServices& services) -> std::unique_ptr<Screen> {
+                                                          if (services.task == TaskKind::writing)
+                                                            return make_learn_write_trial_screen(services);
+                                                          return std::make_unique<LearnParkingTrialScreen>(services);
+                                                        }}};
 
 }  // namespace
 }  // namespace sc

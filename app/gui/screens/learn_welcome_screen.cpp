@@ -172,8 +172,9 @@ class LearnWelcomeScreen final : public Screen {
   bool name_focused_ = false;
 };
 
-const ScreenRegistration kReg{{"learn_welcome", "Trainer: welcome, learner name, resume",
-                               [](AppServices& services) { return std::make_unique<LearnWelcomeScreen>(services); }}};
+const ScreenRegistration kLearnWelcomeScreenRegistration{
+    {"learn_welcome", "Trainer: welcome, learner name, resume",
+     [](AppServices& services) { return std::make_unique<LearnWelcomeScreen>(services); }}};
 
 }  // namespace
 }  // namespace sc

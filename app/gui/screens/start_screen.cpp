@@ -217,8 +217,9 @@ class StartScreen final : public Screen {
   AppServices& services_;
 };
 
-const ScreenRegistration kReg{{"start", "Start: choose task and device",
-                               [](AppServices& services) { return std::make_unique<StartScreen>(services); }}};
+const ScreenRegistration kStartScreenRegistration{{"start", "Start: choose task and device", [](AppServices& services) {
+                                                     return std::make_unique<StartScreen>(services);
+                                                   }}};
 
 }  // namespace
 }  // namespace sc
