@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
@@ -29,7 +30,7 @@ namespace sc::cli {
 namespace {
 
 struct DiagnoseArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string model;
   std::string png_dir;
   std::string out;
@@ -46,13 +47,13 @@ std::string drill_caption(const TaskKit& kit, const PlayableDrill& drill, std::s
   return caption;
 }
 
-void write_drill_pngs(const TaskKit& kit, const Diagnosis& diagnosis, const std::filesystem::path& dir) {
+void write_drill_pngs(TaskKind task, const TaskKit& kit, const Diagnosis& diagnosis, const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   std::unique_ptr<GlContext> context;
   for (std::size_t i = 0; i < diagnosis.drills.size(); ++i) {
     const PlayableDrill& drill = diagnosis.drills[i];
     const std::filesystem::path file = dir / ("drill_" + std::to_string(i + 1) + ".png");
-    if (kit.task() == "parking") {
+    if (task == TaskKind::parking) {
       // The drill trial drawn as a trail, its ghost path as the ribbon to follow.
       const ParkingTrial trial = parse_parking_trial(kit.drill_trial(drill), "drill");
       const ParkingPath ghost = simulate_parking_path(trial);
@@ -73,8 +74,8 @@ void write_drill_pngs(const TaskKit& kit, const Diagnosis& diagnosis, const std:
 // Each file is parsed with its own name before the diagnosis: a problem then names the file and the whole
 // JSON path ($.scenario.heading0, not "trial: $.heading0"), and a writing trace capped at its point limit
 // gets the documented warning.
-void check_trial_file(const std::string& task, const Json& doc, const std::string& file) {
-  if (task == "parking") {
+void check_trial_file(TaskKind task, const Json& doc, const std::string& file) {
+  if (task == TaskKind::parking) {
     parse_parking_trial(doc, file);
     return;
   }
@@ -105,7 +106,7 @@ int run(const DiagnoseArgs& args) {
   }
   Json doc = diagnosis_json(*kit, diagnosis);
   for (std::size_t i = 0; i < args.trials.size(); ++i) doc["trials"][i]["file"] = args.trials[i];
-  if (!args.png_dir.empty()) write_drill_pngs(*kit, diagnosis, args.png_dir);
+  if (!args.png_dir.empty()) write_drill_pngs(args.task, *kit, diagnosis, args.png_dir);
   if (args.out.empty())
     std::printf("%s\n", doc.dump(1).c_str());
   else
@@ -115,7 +116,7 @@ int run(const DiagnoseArgs& args) {
 
 CommandRunner setup_diagnose(CLI::App& sub) {
   auto args = std::make_shared<DiagnoseArgs>();
-  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task)->required();
   sub.add_option("--model", args->model,
                  "CompILE model file (default: assets/models/<task>.pt, else the time heuristic)");
   sub.add_option("--seed", args->seed, "Seed of the drills' random expert segments (default 0)");

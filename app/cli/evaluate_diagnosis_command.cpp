@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
@@ -21,7 +22,7 @@ namespace sc::cli {
 namespace {
 
 struct EvaluateDiagnosisArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string model;
   int learners = 20;
   int pretest = 5;  // the app's pre-test (SessionSettings::pretest_count)
@@ -58,8 +59,8 @@ std::string skill_list(const std::vector<int>& skills) {
 }
 
 int run(const EvaluateDiagnosisArgs& args) {
-  if (args.task != "parking") throw InputError("evaluate-diagnosis", "only --task parking is measured here");
-  const std::unique_ptr<TaskKit> base = make_task_kit("parking", args.model);
+  if (args.task != TaskKind::parking) throw InputError("evaluate-diagnosis", "only --task parking is measured here");
+  const std::unique_ptr<TaskKit> base = make_task_kit(TaskKind::parking, args.model);
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
@@ -99,7 +100,7 @@ int run(const EvaluateDiagnosisArgs& args) {
 
 CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   auto args = std::make_shared<EvaluateDiagnosisArgs>();
-  sub.add_option("--task", args->task, "parking (writing: not measured by this command)")->required();
+  add_task_option(sub, args->task, "parking (writing: not measured by this command)")->required();
   sub.add_option("--model", args->model, "CompILE model file (default: assets/models/parking.pt)");
   sub.add_option("--learners", args->learners, "Learners per deficit and mode")
       ->capture_default_str()

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "engine/writing/step_data.hpp"
 #include "engine/writing/word_generator.hpp"
@@ -39,7 +40,7 @@ namespace sc::cli {
 namespace {
 
 struct EvaluateArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string model;
   bool time_heuristic = false;
   int count = 200;
@@ -95,12 +96,12 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
 std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& args) {
   if (args.time_heuristic)
     return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
-  return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, args.task));
+  return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, std::string(to_string(args.task))));
 }
 
 // The robustness table (writing): the model (or the time heuristic) on words by realistic learners.
 int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
-  if (args.task != "writing") throw InputError("--robustness", "only for --task writing");
+  if (args.task != TaskKind::writing) throw InputError("--robustness", "only for --task writing");
   const std::shared_ptr<const SkillExtractor> extractor = robustness_extractor(args);
   std::fprintf(stderr, "evaluate-skills: %d classic words (seed %llu) by realistic learners...\n", args.count,
                static_cast<unsigned long long>(seed));
@@ -119,7 +120,7 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
 
 // Planted weaknesses under realistic input (writing): Alg. 2 on the app's pre-test written by planted learners.
 int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
-  if (args.task != "writing") throw InputError("--planted-weaknesses", "only for --task writing");
+  if (args.task != TaskKind::writing) throw InputError("--planted-weaknesses", "only for --task writing");
   const WritingKit kit(robustness_extractor(args), "");
   std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
                args.learners, args.learners, static_cast<unsigned long long>(seed));
@@ -140,8 +141,8 @@ int run(const EvaluateArgs& args) {
   // The time heuristic has no training seed; 1 is what a model trained with the default --seed 0 is scored on.
   std::uint64_t seed = args.seed ? *args.seed : 1;
   if (!args.time_heuristic) {
-    const int state_dim = args.task == "parking" ? kParkingStateDim : writing::kWritingStateDim;
-    model.emplace(CompileModel::load(args.model, args.task, state_dim, 2));
+    const int state_dim = args.task == TaskKind::parking ? kParkingStateDim : writing::kWritingStateDim;
+    model.emplace(CompileModel::load(args.model, std::string(to_string(args.task)), state_dim, 2));
     // Held-out data: the training data was generated from the model's own seed.
     seed = args.seed ? *args.seed : model->config().seed + 1;
     if (seed == model->config().seed)
@@ -150,7 +151,7 @@ int run(const EvaluateArgs& args) {
   if (args.robustness) return print_robustness(args, seed);
   if (args.planted) return print_planted_weaknesses(args, seed);
   std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
-               args.task.c_str(), static_cast<unsigned long long>(seed));
+               std::string(to_string(args.task)).c_str(), static_cast<unsigned long long>(seed));
   const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
   const std::vector<StepSequence> steps = data.steps();
   const TimeHeuristicExtractor heuristic(CompileConfig::defaults_for(args.task).num_segments);
@@ -168,10 +169,10 @@ int run(const EvaluateArgs& args) {
   report["segmentation_seconds"] = seconds;
   if (args.details) report["demos"] = demo_details(data, segmentations);
   if (args.realistic_drivers) {
-    if (args.task != "parking") throw InputError("--realistic-drivers", "only for --task parking");
+    if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     if (model) {
-      const CompileExtractor extractor = CompileExtractor::load(args.model, args.task);
+      const CompileExtractor extractor = CompileExtractor::load(args.model, std::string(to_string(args.task)));
       report["realistic_drivers"] = realistic_driver_rows(extractor, args.count, seed);
     } else {
       report["realistic_drivers"] = realistic_driver_rows(heuristic, args.count, seed);
@@ -183,7 +184,7 @@ int run(const EvaluateArgs& args) {
 
 CommandRunner setup_evaluate_skills(CLI::App& sub) {
   auto args = std::make_shared<EvaluateArgs>();
-  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task)->required();
   auto* model = sub.add_option("--model", args->model, "CompILE model file");
   auto* heuristic = sub.add_flag("--time-heuristic", args->time_heuristic,
                                  "Score the paper's Time Heuristic baseline (K equal segments, K of the task's "

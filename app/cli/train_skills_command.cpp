@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.hpp"
+#include "app/cli/task_option.hpp"
 #include "app/core/training_progress_bar.hpp"
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
@@ -22,7 +23,7 @@ namespace {
 constexpr double kValidFraction = 0.1;
 
 struct TrainArgs {
-  std::string task;
+  TaskKind task = TaskKind::parking;
   std::string data;
   std::string out;
   int demos = 1000;
@@ -77,15 +78,17 @@ int run(const TrainArgs& args) {
   config.seed = args.seed;
   if (args.iterations >= 0) config.iterations = args.iterations;
   config = with_overrides(config, args.overrides);
-  std::fprintf(stderr, "%s: %s demonstrations...\n", args.task.c_str(), args.data.empty() ? "generating" : "reading");
-  if (args.augment > 0 && (args.task != "writing" || !args.data.empty()))
+  std::fprintf(stderr, "%s: %s demonstrations...\n", std::string(to_string(args.task)).c_str(),
+               args.data.empty() ? "generating" : "reading");
+  if (args.augment > 0 && (args.task != TaskKind::writing || !args.data.empty()))
     throw InputError("--augment", "only for generated writing words (--task writing without --data)");
   const SkillDataSet data = args.augment > 0    ? generate_augmented_writing_demos(args.demos, args.augment, args.seed)
                             : args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed)
                                                 : read_task_demos(args.task, args.data);
   const DataSplit split = split_demos(data, kValidFraction, args.seed);
-  std::fprintf(stderr, "%s: %zu training and %zu validation trajectories (%s)\n", args.task.c_str(), split.train.size(),
-               split.valid.size(), data.description.c_str());
+  std::fprintf(stderr, "%s: %zu training and %zu validation trajectories (%s)\n",
+               std::string(to_string(args.task)).c_str(), split.train.size(), split.valid.size(),
+               data.description.c_str());
 
   CompileTrainer trainer(config);
   if (args.fix_boundaries) {
@@ -122,7 +125,7 @@ int run(const TrainArgs& args) {
 
 CommandRunner setup_train_skills(CLI::App& sub) {
   auto args = std::make_shared<TrainArgs>();
-  sub.add_option("--task", args->task, "parking or writing")->required()->check(CLI::IsMember({"parking", "writing"}));
+  add_task_option(sub, args->task)->required();
   sub.add_option("--data", args->data, "Folder of trial files to train on (default: generate expert demonstrations)");
   sub.add_option("--demos", args->demos, "Demonstrations to generate when no --data is given")
       ->capture_default_str()

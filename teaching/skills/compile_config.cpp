@@ -66,10 +66,12 @@ CompileConfig CompileConfig::writing_defaults() {
   return c;
 }
 
+CompileConfig CompileConfig::defaults_for(TaskKind task) {
+  return task == TaskKind::parking ? parking_defaults() : writing_defaults();
+}
+
 CompileConfig CompileConfig::defaults_for(const std::string& task) {
-  if (task == "parking") return parking_defaults();
-  if (task == "writing") return writing_defaults();
-  throw InputError("--task", "unknown task \"" + task + "\" (expected parking or writing)");
+  return defaults_for(parse_task_kind(task, "--task"));
 }
 
 void CompileConfig::validate(const std::string& where) const {

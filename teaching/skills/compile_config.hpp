@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/json_file.hpp"
+#include "engine/core/task_kind.hpp"
 
 namespace sc {
 
@@ -60,7 +61,8 @@ struct CompileConfig {
   // latent KL (see compile_config.cpp).
   static CompileConfig writing_defaults();
   // Task defaults by name ("parking" or "writing"); throws InputError otherwise.
-  static CompileConfig defaults_for(const std::string& task);
+  static CompileConfig defaults_for(TaskKind task);
+  static CompileConfig defaults_for(const std::string& task);  // InputError for a name that is not a task
 
   bool uses_states() const { return mode != CompileMode::Action; }
   // Throws InputError naming `where` when a value is out of range.

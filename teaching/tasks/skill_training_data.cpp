@@ -111,34 +111,35 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
   return out;
 }
 
-SkillDataSet generate_task_demos(const std::string& task, int count, std::uint64_t seed) {
-  if (task == "parking") return generate_parking_demos(count, seed);
-  if (task == "writing") return generate_writing_demos(count, seed);
-  throw InputError("--task", "'" + task + "' is not parking or writing");
+SkillDataSet generate_task_demos(TaskKind task, int count, std::uint64_t seed) {
+  return task == TaskKind::parking ? generate_parking_demos(count, seed) : generate_writing_demos(count, seed);
 }
 
 namespace {
 
-StepSequence trial_steps(const std::string& task, const std::filesystem::path& file) {
+StepSequence trial_steps(TaskKind task, const std::filesystem::path& file) {
   const Json doc = read_json_file(file);
-  const std::string name = file.string();
-  if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
-    throw InputError(name, "not a " + task + " trial ($.task is not \"" + task + "\")");
-  if (task == "parking") return parking_step_sequence(parse_parking_trial(doc, name));
+  const std::string name = file.string(), task_name(to_string(task));
+  if (!doc.is_object() || !doc.contains("task") || doc["task"] != task_name)
+    throw InputError(name, "not a " + task_name + " trial ($.task is not \"" + task_name + "\")");
+  if (task == TaskKind::parking) return parking_step_sequence(parse_parking_trial(doc, name));
   return writing_step_sequence(writing::parse_writing_trial(doc, name));
 }
 
 }  // namespace
 
-SkillDataSet read_task_demos(const std::string& task, const std::filesystem::path& dir) {
-  if (task != "parking" && task != "writing") throw InputError("--task", "'" + task + "' is not parking or writing");
+SkillDataSet read_task_demos(TaskKind task, const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) throw InputError(dir.string(), "not a folder of trial files");
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   if (files.empty()) throw InputError(dir.string(), "contains no .json trial files");
-  SkillDataSet out{task, std::to_string(files.size()) + " " + task + " trial files from " + dir.string(), {}, {}};
+  SkillDataSet out{
+      std::string(to_string(task)),
+      std::to_string(files.size()) + " " + std::string(to_string(task)) + " trial files from " + dir.string(),
+      {},
+      {}};
   for (const auto& file : files) {
     StepSequence steps = trial_steps(task, file);
     if (steps.length() == 0) throw InputError(file.string(), "trial has no steps");

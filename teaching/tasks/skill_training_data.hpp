@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/task_kind.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
 namespace sc {
@@ -39,12 +40,12 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed);
 // (find_repeat_boundaries over the clean words, K - 1 = 7 at most), inherited by their copies; the true
 // boundaries are only kept as true_boundaries (for reports), never used to train.
 SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed);
-// generate_parking_demos or generate_writing_demos by task name (InputError for another task).
-SkillDataSet generate_task_demos(const std::string& task, int count, std::uint64_t seed);
+// generate_parking_demos or generate_writing_demos for the task.
+SkillDataSet generate_task_demos(TaskKind task, int count, std::uint64_t seed);
 
 // Every *.json trial file of `dir` (sorted by name, so the order is reproducible). Throws InputError naming
 // the file for a malformed trial, a trial of another task, or a folder without trials.
-SkillDataSet read_task_demos(const std::string& task, const std::filesystem::path& dir);
+SkillDataSet read_task_demos(TaskKind task, const std::filesystem::path& dir);
 
 struct DataSplit {
   std::vector<StepSequence> train;

@@ -7,7 +7,7 @@
 
 #include <memory>
 
-#include "app/gui/screens/review_pictures.hpp"
+#include "app/core/review_pictures.hpp"
 #include "engine/render/gl_context.hpp"
 #include "teaching/review/expertise_rounds.hpp"
 #include "tests/review/review_fixture.hpp"

@@ -70,10 +70,10 @@ TEST(SkillTrainingData, FolderWithoutTrialsOrWithAForeignTrialIsRefused) {
   const auto dir = test::scratch_path("skill_training_data", "folder");
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  EXPECT_THROW(read_task_demos("writing", dir), InputError);
+  EXPECT_THROW(read_task_demos(TaskKind::writing, dir), InputError);
   write_json_file(dir / "a.json", Json{{"task", "parking"}});
   try {
-    read_task_demos("writing", dir);
+    read_task_demos(TaskKind::writing, dir);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("a.json"), std::string::npos) << e.what();

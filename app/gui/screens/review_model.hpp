@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/gui/app_services.hpp"
-#include "app/gui/screens/review_pictures.hpp"
+#include "app/core/review_pictures.hpp"
 #include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/review_playback.hpp"
 #include "teaching/review/session_rows.hpp"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <optional>
 
-#include "app/gui/screens/review_pictures.hpp"
+#include "app/core/review_pictures.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl_context.hpp"
 #include "teaching/review/review_report.hpp"

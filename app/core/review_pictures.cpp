@@ -1,4 +1,4 @@
-#include "app/gui/screens/review_pictures.hpp"
+#include "app/core/review_pictures.hpp"
 
 #include <algorithm>
 #include <cstdio>
