@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <string_view>
+#include <utility>
 
 #include "app/gui/screen_host.hpp"
 #include "engine/core/error.hpp"
@@ -16,7 +17,9 @@ constexpr int kMaxFrames = 1000000;
 constexpr std::size_t kMaxExpandedSteps = 200000;  // a typo in nested repeats must not eat the memory
 // Nesting is read recursively and each level's JSON path is longer, so depth is bounded (scripts use 1-2
 // levels); and repeats of empty or small bodies are bounded by the work they expand to, counting every
-// pass through a list of steps, not only the steps kept (1000^3 empty passes never add a step).
+// pass through a list of steps, not only the steps kept (1000^3 empty passes never add a step). A repeat's
+// body is read once and its steps copied: reading it again per pass made that work JSON parsing (about a
+// second for 2,000,000 passes in a Release build, over libFuzzer's 10 s under the sanitizers).
 constexpr int kMaxRepeatDepth = 16;
 constexpr std::size_t kMaxExpansionWork = 2000000;
 
@@ -89,7 +92,7 @@ int mouse_button_of(const JsonView& v) {
 
 class ScriptReader {
  public:
-  explicit ScriptReader(InputScript& script) : script_(script) {}
+  explicit ScriptReader(InputScript& script) : script_(script), out_(&script.steps) {}
 
   void read_steps(const JsonView& steps) {
     if (!steps.is_array()) steps.fail("expected an array of steps");
@@ -199,9 +202,17 @@ class ScriptReader {
   void read_repeat(const JsonView& step) {
     const int times = int_in(step.at("repeat"), 0, kMaxRepeat);
     if (depth_ >= kMaxRepeatDepth) step.fail("repeats nested more than " + std::to_string(kMaxRepeatDepth) + " deep");
+    std::vector<ScriptStep> body;
+    const std::size_t work_before = work_;
+    std::vector<ScriptStep>* const outer = std::exchange(out_, &body);
     ++depth_;
-    for (int i = 0; i < times; ++i) read_steps(step.at("steps"));
+    read_steps(step.at("steps"));
     --depth_;
+    out_ = outer;
+    if (times == 0) return;
+    count_work(step, static_cast<std::size_t>(times - 1) * (work_ - work_before));
+    for (int i = 0; i < times; ++i)
+      for (const ScriptStep& s : body) add(s, step);
   }
 
   void count_work(const JsonView& where, std::size_t units) {
@@ -211,12 +222,13 @@ class ScriptReader {
   }
 
   void add(const ScriptStep& s, const JsonView& step) {
-    if (script_.steps.size() >= kMaxExpandedSteps)
+    if (out_->size() >= kMaxExpandedSteps)
       step.fail("the script expands to more than " + std::to_string(kMaxExpandedSteps) + " steps");
-    script_.steps.push_back(s);
+    out_->push_back(s);
   }
 
   InputScript& script_;
+  std::vector<ScriptStep>* out_;  // where read steps go: the script, or the body of the repeat being read
   int depth_ = 0;
   std::size_t work_ = 0;
 };
