@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "engine/core/error.hpp"
+#include "engine/core/task_kind.hpp"
 
 namespace sc {
 namespace {
@@ -127,7 +128,8 @@ Json parking_scenario_to_json(const ParkingScenario& s) {
 ParkingTrial parse_parking_trial(const Json& doc, std::string_view source) {
   const JsonView root(doc, std::string(source));
   const auto task = root.at("task");
-  if (task.string() != "parking") task.fail("expected \"parking\", got \"" + task.string() + "\"");
+  if (task_kind_of(task.string()) != TaskKind::parking)
+    task.fail("expected \"parking\", got \"" + task.string() + "\"");
   ParkingTrial t;
   t.scenario = parse_parking_scenario(root.at("scenario"));
   if (auto hz = root.find("control_hz")) {

@@ -1,6 +1,7 @@
 #include "engine/writing/writing_trial.hpp"
 
 #include "engine/core/error.hpp"
+#include "engine/core/task_kind.hpp"
 
 namespace sc::writing {
 namespace {
@@ -31,7 +32,8 @@ WritingTrial parse_writing_trial(const Json& doc, std::string_view source) {
   if (!root.is_object()) root.fail("expected a JSON object (a writing trial)");
   WritingTrial trial;
   const JsonView task = root.at("task");
-  if (task.string() != "writing") task.fail("expected \"writing\", got \"" + task.string() + "\"");
+  if (task_kind_of(task.string()) != TaskKind::writing)
+    task.fail("expected \"writing\", got \"" + task.string() + "\"");
   trial.scenario = parse_writing_scenario(root.at("scenario"));
 
   const JsonView points = root.at("points");
