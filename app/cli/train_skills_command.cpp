@@ -14,6 +14,7 @@
 #include "app/core/training_progress_bar.hpp"
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
+#include "teaching/learners/parking/augmented_parking_demos.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
 
@@ -29,9 +30,10 @@ struct TrainArgs {
   int demos = 1000;
   int iterations = -1;  // -1: the task's default
   unsigned long long seed = 0;
-  std::vector<std::string> overrides;  // --set key=value
-  bool fix_boundaries = false;         // diagnostic: boundaries fixed at the true symbol edges
-  int augment = 0;                     // writing: perturbed copies per word (0 = the expert's gold words only)
+  std::vector<std::string> overrides;        // --set key=value
+  bool fix_boundaries = false;               // diagnostic: boundaries fixed at the true symbol edges
+  int augment = 0;                           // realistic copies per demonstration (0 = the expert's only)
+  std::string augment_drawers = "training";  // writing: "training" (paper's + drawers 1-10) or "paper"
 };
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
@@ -73,6 +75,13 @@ std::string git_revision() {
   return changes.empty() ? hash : hash + "-dirty";
 }
 
+SkillDataSet generate_augmented_demos(const TrainArgs& args) {
+  if (args.task == TaskKind::parking) return generate_augmented_parking_demos(args.demos, args.augment, args.seed);
+  const AugmentDrawers drawers =
+      args.augment_drawers == "paper" ? AugmentDrawers::PaperOnly : AugmentDrawers::PaperAndTraining;
+  return generate_augmented_writing_demos(args.demos, args.augment, args.seed, drawers);
+}
+
 int run(const TrainArgs& args) {
   CompileConfig config = CompileConfig::defaults_for(args.task);
   config.seed = args.seed;
@@ -80,9 +89,9 @@ int run(const TrainArgs& args) {
   config = with_overrides(config, args.overrides);
   std::fprintf(stderr, "%s: %s demonstrations...\n", std::string(to_string(args.task)).c_str(),
                args.data.empty() ? "generating" : "reading");
-  if (args.augment > 0 && (args.task != TaskKind::writing || !args.data.empty()))
-    throw InputError("--augment", "only for generated writing words (--task writing without --data)");
-  const SkillDataSet data = args.augment > 0    ? generate_augmented_writing_demos(args.demos, args.augment, args.seed)
+  if (args.augment > 0 && !args.data.empty())
+    throw InputError("--augment", "only for generated demonstrations (without --data)");
+  const SkillDataSet data = args.augment > 0    ? generate_augmented_demos(args)
                             : args.data.empty() ? generate_task_demos(args.task, args.demos, args.seed)
                                                 : read_task_demos(args.task, args.data);
   const DataSplit split = split_demos(data, kValidFraction, args.seed);
@@ -141,10 +150,16 @@ CommandRunner setup_train_skills(CLI::App& sub) {
                "latents and the decoder, to measure the validation NLL CompILE's objective gives the letter "
                "segmentation; the model is not for segmenting");
   sub.add_option("--augment", args->augment,
-                 "Writing: train on the generated words with letters by the paper's and drawers 1-10 plus this many "
-                 "perturbed copies of each (wobble, affine), which inherit the clean word's repetition boundaries for "
-                 "the warm start (docs/skills.md \"Robustness\")")
+                 "Add this many realistic copies of each generated demonstration. Writing: letters by the paper's and "
+                 "drawers 1-10, copies with wobble and affine variation that inherit the clean word's repetition "
+                 "boundaries for the warm start; parking: novice drives of each plan (noise, delay, device) "
+                 "(docs/skills.md \"Robustness\")")
       ->check(CLI::Range(0, 20));
+  sub.add_option("--augment-drawers", args->augment_drawers,
+                 "Writing with --augment: whose letters the words are made of, \"training\" (the paper's drawer and "
+                 "drawers 1-10) or \"paper\" (the paper's drawer only, so letters repeat exactly)")
+      ->check(CLI::IsMember({"training", "paper"}))
+      ->capture_default_str();
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

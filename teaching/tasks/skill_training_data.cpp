@@ -66,12 +66,13 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   return out;
 }
 
-SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed) {
+SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed, AugmentDrawers drawer_choice) {
   if (count < 1 || copies < 0)
     throw InputError("writing demonstrations", "count must be at least 1, copies at least 0");
   const std::vector<std::string> words = writing::classic_words(count, seed);
   const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
-  std::vector<int> drawers_pool = training_drawers();
+  std::vector<int> drawers_pool =
+      drawer_choice == AugmentDrawers::PaperAndTraining ? training_drawers() : std::vector<int>{};
   drawers_pool.push_back(0);  // the paper's drawer
   const Rng root = Rng(seed).fork(0xa0a0u);
   std::vector<WrittenWord> clean;
@@ -106,7 +107,10 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
   }
   out.description =
       std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
-      "), letters by the paper's and Omniglot drawers 1-10, plus " + std::to_string(copies) +
+      "), letters by " +
+      (drawer_choice == AugmentDrawers::PaperAndTraining ? "the paper's and Omniglot drawers 1-10"
+                                                         : "the paper's drawer") +
+      ", plus " + std::to_string(copies) +
       " perturbed copies each (wobble <= 12 px, affine <= 0.12) with the clean words' repetition boundaries";
   return out;
 }

@@ -33,13 +33,19 @@ struct SkillDataSet {
 SkillDataSet generate_parking_demos(int count, std::uint64_t seed);
 // `count` classic words from the reference's generator (Rng(seed)), each the expert's gold trajectory.
 SkillDataSet generate_writing_demos(int count, std::uint64_t seed);
-// Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn from the paper's
-// and the training drawers (training_drawers(): the unseen ones are never used), then `copies` perturbed
+// Whose letters augmented writing words are made of.
+enum class AugmentDrawers {
+  PaperAndTraining,  // each letter by a drawer drawn from the paper's and training_drawers()
+  PaperOnly,         // every letter the paper's (the expert's glyphs: letters repeat exactly)
+};
+// Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn as `drawers`
+// says (the unseen drawers, unseen_drawers(), are never used), then `copies` perturbed
 // copies of each (writing_realistic_learner.hpp: smooth wobble up to 12 px, per-letter affine up to 0.12;
 // no resampling, so step indices are kept). warm_boundaries: the clean words' repetition boundaries
 // (find_repeat_boundaries over the clean words, K - 1 = 7 at most), inherited by their copies; the true
 // boundaries are only kept as true_boundaries (for reports), never used to train.
-SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed);
+SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed,
+                                              AugmentDrawers drawers = AugmentDrawers::PaperAndTraining);
 // generate_parking_demos or generate_writing_demos for the task.
 SkillDataSet generate_task_demos(TaskKind task, int count, std::uint64_t seed);
 
