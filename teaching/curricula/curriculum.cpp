@@ -50,13 +50,17 @@ std::vector<PracticeItem> fill_budget(const ItemStream& next, int budget) {
 }
 
 // The default budget's rule (curriculum.hpp): land within [lo, hi], skipping items whose next session would
-// overshoot. Bounded, because a stream never runs dry on its own.
+// overshoot. Coarse material (whole trajectories all longer than the gap left) can leave no candidate that
+// fits; after kStuck misses in a row the last session is given back, so that material of another length can
+// land in the window. Bounded, because a stream never runs dry on its own.
 std::vector<PracticeItem> fill_window(const ItemStream& next, int budget, double tolerance) {
   constexpr int kMaxCandidates = 2000;
+  constexpr int kStuck = 200;  // more than a pass over a 100-demo expert pool
   const int lo = static_cast<int>(std::ceil(budget * (1.0 - tolerance)));
   const int hi = static_cast<int>(std::floor(budget * (1.0 + tolerance)));
   std::vector<PracticeItem> items;
   int total = 0;
+  int misses = 0;
   for (int tries = 0; tries < kMaxCandidates && total < lo; ++tries) {
     std::optional<PracticeItem> item = next();
     if (!item) break;
@@ -69,6 +73,11 @@ std::vector<PracticeItem> fill_window(const ItemStream& next, int budget, double
     if (sessions > 0) {
       item->sessions = sessions;
       items.push_back(std::move(*item));
+      misses = 0;
+    } else if (++misses >= kStuck && !items.empty()) {
+      total -= items.back().steps();
+      if (--items.back().sessions == 0) items.pop_back();
+      misses = 0;
     }
   }
   return items;

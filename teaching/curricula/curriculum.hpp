@@ -24,7 +24,8 @@
 // sets the budget B in control steps, so Ind. Drills and Adaptive's first round practise exactly B. The
 // other arms take sessions in their order while the total is below B·(1 − budget_tolerance); a session
 // that would pass B·(1 + budget_tolerance) is skipped together with the rest of its item and the next
-// item is tried. With the default tolerance of 4.5 % any two arms differ by less than 10 %.
+// item is tried; after 200 such misses in a row the last session taken is given back (whole trajectories
+// can all be longer than the gap left). With the default tolerance of 4.5 % any two arms differ by less than 10 %.
 // An explicit budget (budget_steps > 0; the synthetic students use it) keeps the older rule: sessions are
 // added while the total is below the budget, the crossing one only if that lands at least as close to it,
 // and Ind. Drills repeats its drills until the budget is filled.

@@ -147,6 +147,26 @@ TEST(Curriculum, EveryArmPractisesTheReferenceBudgetWithinTheTolerance) {
   }
 }
 
+// Whole trajectories are coarse material: when every trajectory left is longer than the gap to the window,
+// the fill has to give one back and try another length (the study corner's 15-25-step drives did this).
+TEST(Curriculum, LongTrajectoriesStillLandWithinTheTolerance) {
+  Pool pool = make_pool();
+  Rng rng(77);
+  for (Segmentation& seg : pool.skills) {
+    const int first = 8 + static_cast<int>(rng.below(5)), second = 8 + static_cast<int>(rng.below(6));
+    const int a = seg.segments.front().skill, b = seg.segments.back().skill;
+    seg.segments = {{a, 0, first}, {b, first, first + second}};
+  }
+  const CurriculumConfig config = CurriculumConfig::parking();
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const CurriculumInputs in = inputs_for(pool, seed);
+    const int budget = curriculum_budget_steps(in, config);
+    const Curriculum c = make_curriculum(StudyCondition::FullTrajectory, in, config);
+    EXPECT_LE(std::abs(c.total_steps() - budget), config.budget_tolerance * budget)
+        << "seed " << seed << ": " << c.total_steps() << " vs " << budget;
+  }
+}
+
 TEST(Curriculum, ExplicitBudgetsAreFilled) {
   const Pool pool = make_pool();
   CurriculumConfig config = CurriculumConfig::writing();
