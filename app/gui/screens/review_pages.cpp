@@ -20,6 +20,14 @@ std::string session_label(const review::SessionListRow& row) {
          review::cell_text(row, review::SessionColumn::Date);
 }
 
+// `text` cut to fit `width` pixels in the current font, ending in "..." when cut.
+std::string fitted_to_width(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::string cut = text;
+  while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) cut.pop_back();
+  return cut + "...";
+}
+
 void world_frame(UiContext& ui, float x, float y, float w, float h) {
   ImGui::GetBackgroundDrawList()->AddRect({x, y}, {x + w, y + h}, IM_COL32(60, 68, 82, 255), 0.0f, 0,
                                           1.0f * ui.ui_scale);
@@ -57,12 +65,15 @@ void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
     if (current) ImGui::PopStyleColor();
     ImGui::EndDisabled();
   }
+  const float back_w = 150 * s;
+  const float back_x = static_cast<float>(ui.width) - back_w - ImGui::GetStyle().WindowPadding.x;
   if (const auto* row = model.session_row()) {
     ImGui::SameLine(0, 24 * s);
-    ImGui::TextDisabled("%s", session_label(*row).c_str());
+    const std::string label = session_label(*row);  // cut before the Start screen button, whole on hover
+    ImGui::TextDisabled("%s", fitted_to_width(label, back_x - ImGui::GetCursorPosX() - 16 * s).c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", label.c_str());
   }
-  const float back_w = 150 * s;
-  ImGui::SameLine(static_cast<float>(ui.width) - back_w - ImGui::GetStyle().WindowPadding.x);
+  ImGui::SameLine(back_x);
   if (ImGui::Button("Start screen", {back_w, 0})) ui.navigator.go_to("start");
   ImGui::End();
   if (!model.message.empty()) {
