@@ -64,9 +64,12 @@ Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint
                     {"drives", r.drives},
                     {"steps", r.agreement.steps},
                     {"agreement", r.agreement.share()},
+                    {"skill_presence", r.presence.share()},
                     {"still_parked", r.successes}});
-    std::fprintf(stderr, "  %-48s agreement %5.1f %%  (%d steps, %d of %d drives still parked)\n", r.condition.c_str(),
-                 100.0 * r.agreement.share(), r.agreement.steps, r.successes, r.drives);
+    std::fprintf(stderr,
+                 "  %-48s agreement %5.1f %%  skills present %5.1f %%  (%d steps, %d of %d drives still parked)\n",
+                 r.condition.c_str(), 100.0 * r.agreement.share(), 100.0 * r.presence.share(), r.agreement.steps,
+                 r.successes, r.drives);
   }
   return rows;
 }

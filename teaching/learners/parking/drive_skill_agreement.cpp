@@ -27,6 +27,16 @@ StepAgreement step_agreement(const Segmentation& clean, int clean_length, const 
   return out;
 }
 
+SkillPresence skill_presence(const Segmentation& clean, const Segmentation& driven) {
+  std::vector<int> expert = clean.skills(), copy = driven.skills();
+  std::sort(expert.begin(), expert.end());
+  expert.erase(std::unique(expert.begin(), expert.end()), expert.end());
+  SkillPresence out;
+  out.skills = static_cast<int>(expert.size());
+  for (int m : expert) out.present += std::find(copy.begin(), copy.end(), m) != copy.end();
+  return out;
+}
+
 std::vector<DriveCondition> standard_drive_conditions() {
   auto profile = [](DriveDevice device, int hz, double noise, double delay) {
     RealisticDriverProfile p;
@@ -61,7 +71,7 @@ std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extracto
     const DriveCondition& condition = conditions[c];
     const Rng per_condition = root.fork(c);
     std::vector<StepSequence> driven;
-    AgreementRow row{condition.name, static_cast<int>(expert_drives.size()), {}, 0};
+    AgreementRow row{condition.name, static_cast<int>(expert_drives.size()), {}, {}, 0};
     for (std::size_t i = 0; i < expert_drives.size(); ++i) {
       Rng rng = per_condition.fork(i);
       const ParkingTrial drive = realistic_drive(expert_drives[i], condition.profile, rng);
@@ -75,6 +85,9 @@ std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extracto
           step_agreement(clean_skills[i], clean[i].length(), driven_skills[i], driven[i].length(), shift);
       row.agreement.steps += a.steps;
       row.agreement.agreed += a.agreed;
+      const SkillPresence p = skill_presence(clean_skills[i], driven_skills[i]);
+      row.presence.skills += p.skills;
+      row.presence.present += p.present;
     }
     rows.push_back(std::move(row));
   }

@@ -26,6 +26,15 @@ struct StepAgreement {
 StepAgreement step_agreement(const Segmentation& clean, int clean_length, const Segmentation& driven, int driven_length,
                              int shift);
 
+// What Alg. 2 asks of a learner's trial: does each skill of the expert's drive occur anywhere in it? Per
+// drive, the clean drive's distinct skills that also occur in the realistic copy's segmentation.
+struct SkillPresence {
+  int skills = 0;   // distinct skills of the clean drives
+  int present = 0;  // of them, also in the copy
+  double share() const { return skills > 0 ? static_cast<double>(present) / skills : 0.0; }
+};
+SkillPresence skill_presence(const Segmentation& clean, const Segmentation& driven);
+
 struct DriveCondition {
   std::string name;  // e.g. "keyboard, noise 0.1, delay 0.2 s, 15 Hz"
   RealisticDriverProfile profile;
@@ -37,6 +46,7 @@ struct AgreementRow {
   std::string condition;
   int drives = 0;
   StepAgreement agreement;
+  SkillPresence presence;
   int successes = 0;  // realistic drives that still parked (how far the noise takes the car off the plan)
 };
 

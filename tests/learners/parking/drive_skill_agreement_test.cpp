@@ -25,6 +25,16 @@ TEST(DriveSkillAgreement, ComparesTheDelayedDriveWithTheCleanOne) {
   EXPECT_EQ(step_agreement(clean, 8, late, 5, 2).steps, 3);
 }
 
+TEST(DriveSkillAgreement, PresenceCountsTheCleanDrivesDistinctSkillsFoundAnywhereInTheCopy) {
+  const Segmentation clean = segs({{1, 0, 4}, {2, 4, 8}, {1, 8, 10}, {3, 10, 12}});
+  // Skill 2 moved to the end and 3 replaced: 1 and 2 are present, 3 is not; order and place do not matter.
+  const SkillPresence p = skill_presence(clean, segs({{1, 0, 6}, {4, 6, 9}, {2, 9, 12}}));
+  EXPECT_EQ(p.skills, 3);
+  EXPECT_EQ(p.present, 2);
+  EXPECT_DOUBLE_EQ(skill_presence(clean, clean).share(), 1.0);
+  EXPECT_EQ(skill_presence(segs({}), clean).skills, 0);
+}
+
 TEST(DriveSkillAgreement, StandardConditionsCoverEveryDeviceAndBothRates) {
   bool device[3] = {false, false, false}, five_hz = false, fifteen_hz = false;
   for (const DriveCondition& c : standard_drive_conditions()) {
