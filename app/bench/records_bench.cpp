@@ -69,7 +69,7 @@ void BM_RecordTrial(benchmark::State& state) {
   const std::string trajectory = realistic_trajectory(kSteps);
   {
     LearnerStore store(dir);
-    const auto session = store.begin_session({"Bench", "parking", "adaptive", 1, "{}", "2024-05-01T10:00:00.000Z"});
+    const auto session = store.begin_session({"Bench", "parking", "adaptive", 1, "{}", "2024-05-01T10:00:00.000Z", ""});
     const auto trial = bench_trial(session, trajectory);
     for (auto _ : state) {
       const auto result = store.record_trial(trial);
