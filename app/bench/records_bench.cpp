@@ -92,7 +92,7 @@ void BM_RecordTrialSyncNormal(benchmark::State& state) {
     db.exec("PRAGMA synchronous = NORMAL; PRAGMA foreign_keys = ON");
     migrate(db, schema_migrations(), "bench");
     const auto learner = insert_learner_if_new(db, "Bench", "t");
-    const auto session = insert_session(db, learner, {"Bench", "parking", "adaptive", 1, "{}", "t"});
+    const auto session = insert_session(db, learner, {"Bench", "parking", "adaptive", 1, "{}", "t", ""});
     TrialWrite write{bench_trial(session, trajectory), 0};
     for (auto _ : state) {
       ++write.seq;
