@@ -63,10 +63,9 @@ int enrol(const StudyOptions& o) {
   const auto before = store.study_participants(o.name).size();
   const records::StudyParticipant p = store.enrol(o.name, o.learner, records::utc_timestamp_now());
   const bool is_new = store.study_participants(o.name).size() > before;
-  std::printf("%s \"%s\" in study \"%s\" as participant %d of %d (condition not shown; start with: skillcoach learn "
-              "--study \"%s\" --learner \"%s\")\n",
+  std::printf("%s \"%s\" in study \"%s\" as participant %d of %d (the condition is not shown)\n",
               is_new ? "enrolled" : "already enrolled:", p.learner.c_str(), study.name.c_str(), p.seq,
-              study.capacity(), study.name.c_str(), p.learner.c_str());
+              study.capacity());
   return 0;
 }
 

@@ -127,10 +127,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect() const {
         path_, options_.read_only ? SqliteDb::Mode::ReadOnly : SqliteDb::Mode::ReadWriteCreate);
     db->set_busy_timeout(options_.busy_timeout_ms);
     db->exec("PRAGMA foreign_keys = ON");
-    if (db->is_read_only()) {
-      require_current_schema(*db);
-      return db;
-    }
+    if (db->is_read_only()) return readable_schema(std::move(db));
     // WAL: readers never block the trainer's writes, and a commit is one append to the log.
     // synchronous=FULL: the log is fsynced at every commit, so a finished trial survives a power cut too,
     // not only a crash of the program (NORMAL would only guarantee the latter). A commit per trial
@@ -156,19 +153,23 @@ std::unique_ptr<SqliteDb> LearnerStore::connect_immutable() const {
   try {
     auto db = std::make_unique<SqliteDb>(path_, SqliteDb::Mode::ReadOnly, "immutable=1");
     db->exec("PRAGMA foreign_keys = ON");
-    require_current_schema(*db);
-    return db;
+    return readable_schema(std::move(db));
   } catch (const SqliteError& e) {
     throw InputError(path_.string(), "cannot be opened (" + describe_storage_error(e) + ")");
   }
 }
 
-void LearnerStore::require_current_schema(SqliteDb& db) const {
-  const auto version = db.query_int("PRAGMA user_version");
+// A read-only store (export, report, review) reads an older database through a migrated copy in memory, so
+// the file is never changed; a writable store on a read-only file cannot upgrade it and says so.
+std::unique_ptr<SqliteDb> LearnerStore::readable_schema(std::unique_ptr<SqliteDb> db) const {
+  const auto version = db->query_int("PRAGMA user_version");
+  if (version < current_schema_version() && options_.read_only)
+    return migrated_in_memory(*db, schema_migrations(), path_.string());
   if (version != current_schema_version()) {
     throw InputError(path_.string(), "has schema version " + std::to_string(version) + " and needs upgrading to " +
                                          std::to_string(current_schema_version()) + ", but it is read-only");
   }
+  return db;
 }
 
 void LearnerStore::load_spill_file() {

@@ -111,7 +111,7 @@ class LearnerStore {
   std::unique_ptr<SqliteDb> connect_immutable() const;
   SqliteDb& connection() const;
   void reconnect();
-  void require_current_schema(SqliteDb& db) const;
+  std::unique_ptr<SqliteDb> readable_schema(std::unique_ptr<SqliteDb> db) const;
   void load_spill_file();
   SaveResult submit(PendingWrite write);
   int next_seq(std::int64_t session_id);

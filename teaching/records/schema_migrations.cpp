@@ -1,5 +1,7 @@
 #include "teaching/records/schema_migrations.hpp"
 
+#include <sqlite3.h>
+
 #include <array>
 #include <string>
 
@@ -137,6 +139,20 @@ void migrate(SqliteDb& db, std::span<const Migration> migrations, std::string_vi
   db.exec("PRAGMA application_id = " + std::to_string(kSkillCoachApplicationId));
   db.exec("PRAGMA user_version = " + std::to_string(target));
   transaction.commit();
+}
+
+std::unique_ptr<SqliteDb> migrated_in_memory(SqliteDb& source, std::span<const Migration> migrations,
+                                             std::string_view file) {
+  auto copy = std::make_unique<SqliteDb>(":memory:", SqliteDb::Mode::ReadWriteCreate);
+  sqlite3_backup* backup = sqlite3_backup_init(copy->raw(), "main", source.raw(), "main");
+  if (backup == nullptr) throw SqliteError(sqlite3_extended_errcode(copy->raw()), "copy for reading failed");
+  const int stepped = sqlite3_backup_step(backup, -1);
+  const int finished = sqlite3_backup_finish(backup);
+  if (stepped != SQLITE_DONE || finished != SQLITE_OK)
+    throw SqliteError(stepped != SQLITE_DONE ? stepped : finished, "copy for reading failed");
+  copy->exec("PRAGMA foreign_keys = ON");
+  migrate(*copy, migrations, file);
+  return copy;
 }
 
 }  // namespace sc::records

@@ -93,6 +93,30 @@ TEST(RecordStudies, ASessionJoinsOnlyWithItsParticipantsAssignment) {
   EXPECT_DOUBLE_EQ(*sessions[0].improvement, 1.5);
 }
 
+void make_version1_database(const std::filesystem::path& dir) {
+  SqliteDb db(dir / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate);
+  migrate(db, schema_migrations().first(1), "v1");
+  db.exec("INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
+          "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
+          " '2024-05-01T10:00:00.000Z')");
+}
+
+// Export, report and review open read-only: they read an older database as if upgraded, and leave the file
+// exactly as it was (the next writable open upgrades it).
+TEST(RecordStudies, AVersion1DatabaseIsReadWithoutChangingIt) {
+  const auto dir = test::fresh_dir("study-read-v1");
+  make_version1_database(dir);
+  const std::string before = test::file_bytes(dir / "skillcoach.db");
+  {
+    const LearnerStore store(dir, StoreOptions{.read_only = true});
+    EXPECT_EQ(store.schema_version(), 2);
+    ASSERT_EQ(store.list_learners().size(), 1u);
+    EXPECT_EQ(store.list_learners()[0].sessions[0].session.condition, "skills");
+    EXPECT_TRUE(store.list_studies().empty());
+  }
+  EXPECT_EQ(test::file_bytes(dir / "skillcoach.db"), before);
+}
+
 TEST(RecordStudies, AVersion1DatabaseIsUpgradedWithItsData) {
   const auto dir = test::fresh_dir("study-upgrade");
   {
