@@ -120,8 +120,9 @@ std::string lot_words(const SessionSettings& settings) {
 }
 
 // Study mode: the learner is enrolled (if not yet) and gets the study's task and their assigned condition.
-// A participant has one session in the study: an unfinished one resumes, a finished one ends the study for them.
-LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store, const std::optional<records::ResumePoint>& point) {
+// A participant has one session in the study: an unfinished one resumes, a finished one ends the study for
+// them.
+LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store) {
   const auto study = store.study(o.study);
   if (!study) throw InputError(store.database_path().string(), "has no study \"" + o.study + "\"");
   if (o.condition_given) throw InputError("--condition", "cannot be combined with --study: the study assigns it");
@@ -129,13 +130,14 @@ LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store, const 
   if (o.task_given && o.task != task)
     throw InputError("--task", "study \"" + o.study + "\" is a " + study->task + " study");
   o.task = task;
+  const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
   if (point && point->session.study != o.study)
     throw InputError(o.learner, "has an unfinished " + study->task + " session (" + std::to_string(point->session.id) +
                                     ") outside study \"" + o.study + "\"; finish it first");
   for (const auto& s : store.study_sessions(o.study))
     if (s.session.learner == o.learner && s.session.finished)
-      throw InputError(o.learner, "has already completed study \"" + o.study + "\" (session " +
-                                      std::to_string(s.session.id) + ")");
+      throw InputError(
+          o.learner, "has already completed study \"" + o.study + "\" (session " + std::to_string(s.session.id) + ")");
   const records::StudyParticipant participant = store.enrol(o.study, o.learner, records::utc_timestamp_now());
   o.condition = participant.condition;
   std::printf("study \"%s\": participant %d\n", o.study.c_str(), participant.seq);
@@ -147,11 +149,7 @@ int run(LearnOptions o) {
     throw InputError("--lot", "is a parking setting (writing has no lot)");
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
-  if (!o.study.empty()) {
-    const auto study = store.study(o.study);
-    if (study) o.task = parse_task_kind(study->task, "study task");  // the unfinished session looked up is the study's
-    o = enrol_in_study(o, store, store.find_unfinished_session(o.learner, to_string(o.task)));
-  }
+  if (!o.study.empty()) o = enrol_in_study(o, store);
   const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
   SessionSettings settings = point ? settings_of_session(point->session) : new_settings(o, store);
   if (!point) settings.study = o.study;

@@ -105,8 +105,9 @@ int status(const StudyOptions& o) {
 }
 
 void add_store_option(CLI::App& app, std::string& store) {
-  app.add_option("--store", store,
-                 "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  app.add_option(
+      "--store", store,
+      "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
 }
 
 CommandRunner setup_study(CLI::App& sub) {
@@ -122,8 +123,8 @@ CommandRunner setup_study(CLI::App& sub) {
   create_cmd->add_option("--per-condition", o->per_condition, "Target participants per condition")
       ->required()
       ->check(CLI::Range(1, 10000));
-  CLI::Option* seed =
-      create_cmd->add_option("--seed", o->seed, "Randomisation seed (default: drawn at random and stored; keep it secret)");
+  CLI::Option* seed = create_cmd->add_option(
+      "--seed", o->seed, "Randomisation seed (default: drawn at random and stored; keep it secret)");
   CLI::App* enrol_cmd = sub.add_subcommand("enrol", "Enrol a participant (the condition is assigned, not shown)");
   add_store_option(*enrol_cmd, o->store);
   enrol_cmd->add_option("--study", o->name, "The study")->required();

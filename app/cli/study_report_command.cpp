@@ -39,15 +39,20 @@ struct StudyReportOptions {
 Color condition_color(const std::string& key) {
   try {
     switch (parse_condition(key)) {
-      case StudyCondition::FullTrajectory: return Color::hex(0x8c96a3);
-      case StudyCondition::TimeHeuristic: return Color::hex(0xe0833a);
-      case StudyCondition::Skills: return Color::hex(0xd1496b);
-      case StudyCondition::Drills: return Color::hex(0x2f80ed);
-      case StudyCondition::IndDrills: return Color::hex(0x3a8f5c);
-      case StudyCondition::Adaptive: return Color::hex(0x7b4fc9);
+      case StudyCondition::FullTrajectory:
+        return Color::hex(0x8c96a3);
+      case StudyCondition::TimeHeuristic:
+        return Color::hex(0xe0833a);
+      case StudyCondition::Skills:
+        return Color::hex(0xd1496b);
+      case StudyCondition::Drills:
+        return Color::hex(0x2f80ed);
+      case StudyCondition::IndDrills:
+        return Color::hex(0x3a8f5c);
+      case StudyCondition::Adaptive:
+        return Color::hex(0x7b4fc9);
     }
-  } catch (const InputError&) {
-  }
+  } catch (const InputError&) {}
   return Color::hex(0x3a3f47);
 }
 
@@ -55,12 +60,14 @@ StripBoxFigure figure_of(const StudyAnalysis& a) {
   StripBoxFigure f;
   f.title = "Study \"" + a.study.name + "\" (" + a.study.task + "): reward improvement per participant";
   f.panel_title = "mean evaluation reward - mean pre-test reward";
-  f.notes = {"Points: participants. Box: quartiles and median; whiskers: furthest values within 1.5 IQR. "
-             "Black: mean +- standard error."};
+  f.notes = {
+      "Points: participants. Box: quartiles and median; whiskers: furthest values within 1.5 IQR. "
+      "Black: mean +- standard error."};
   for (const ConditionResult& c : a.conditions) {
     const auto& s = c.improvement;
-    f.groups.push_back({c.name, "N = " + std::to_string(s.n) + " of " + std::to_string(c.target), condition_color(c.condition),
-                        c.improvements, s.q1, s.median, s.q3, s.whisker_low, s.whisker_high, s.mean, s.se});
+    f.groups.push_back({c.name, "N = " + std::to_string(s.n) + " of " + std::to_string(c.target),
+                        condition_color(c.condition), c.improvements, s.q1, s.median, s.q3, s.whisker_low,
+                        s.whisker_high, s.mean, s.se});
   }
   return f;
 }
@@ -82,9 +89,9 @@ void print_summary(const StudyAnalysis& a) {
       std::printf("  %-34s not tested (a condition has no counted participant)\n", pair.c_str());
       continue;
     }
-    std::printf("  %-34s U = %6g  p = %-8s p(Holm) = %-8s %s%s\n", pair.c_str(), c.test->u,
-                format_p(c.test->p).c_str(), format_p(c.p_holm).c_str(),
-                c.test->method == stats::MannWhitneyMethod::Exact ? "exact" : "normal", c.significant ? "  *" : "");
+    std::printf("  %-34s U = %6g  p = %-8s p(Holm) = %-8s %s%s\n", pair.c_str(), c.test->u, format_p(c.test->p).c_str(),
+                format_p(c.p_holm).c_str(), c.test->method == stats::MannWhitneyMethod::Exact ? "exact" : "normal",
+                c.significant ? "  *" : "");
   }
 }
 
@@ -113,16 +120,18 @@ int run(const StudyReportOptions& o) {
   write_png(out / png, render_strip_box_figure(*context, figure));
   write_file_atomically(out / "study_report.html", study_report_html(analysis, {png, read_bytes(out / png)}));
   print_summary(analysis);
-  std::printf("wrote participants.csv, conditions.csv, comparisons.csv, study_report.json, %s and study_report.html "
-              "to %s\n",
-              png.c_str(), o.out.c_str());
+  std::printf(
+      "wrote participants.csv, conditions.csv, comparisons.csv, study_report.json, %s and study_report.html "
+      "to %s\n",
+      png.c_str(), o.out.c_str());
   return 0;
 }
 
 CommandRunner setup_study_report(CLI::App& sub) {
   auto o = std::make_shared<StudyReportOptions>();
-  sub.add_option("--store", o->store,
-                 "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  sub.add_option(
+      "--store", o->store,
+      "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
   sub.add_option("--study", o->study, "The study")->required();
   sub.add_option("--out", o->out, "Folder to write the report into (created)")->required();
   sub.add_option("--pairs", o->pairs, "paper: the paper's pairs present in the study (default); all: every pair")
@@ -136,7 +145,8 @@ CommandRunner setup_study_report(CLI::App& sub) {
 
 const CommandRegistration kStudyReportCommandRegistration{
     {"study-report", "A study's result: reward improvement per condition, Mann-Whitney U + Holm, plot, CSV/JSON/HTML",
-     "skillcoach study-report --store ~/.local/share/skillcoach --study pilot --out pilot-report/", setup_study_report}};
+     "skillcoach study-report --store ~/.local/share/skillcoach --study pilot --out pilot-report/",
+     setup_study_report}};
 
 }  // namespace
 }  // namespace sc::cli

@@ -103,8 +103,7 @@ RgbaImage render_strip_box_figure(GlContext& context, const StripBoxFigure& figu
     const PanelBox panel{90 * s, 110 * s, static_cast<float>(figure.width) - 30 * s, bottom - 70 * s};
     const Range range = value_range(figure);
     p.value_axis(figure.panel_title, range, panel);
-    const float width =
-        (panel.right - panel.left) / static_cast<float>(std::max<std::size_t>(figure.groups.size(), 1));
+    const float width = (panel.right - panel.left) / static_cast<float>(std::max<std::size_t>(figure.groups.size(), 1));
     for (std::size_t i = 0; i < figure.groups.size(); ++i)
       p.group(figure.groups[i], range, panel, panel.left + width * static_cast<float>(i), width);
   });

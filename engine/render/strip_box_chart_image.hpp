@@ -18,9 +18,9 @@ struct StripBoxGroup {
   std::string sublabel;  // under the label (e.g. "N = 20")
   Color color;
   std::vector<double> values;
-  double q1 = 0.0, median = 0.0, q3 = 0.0;        // the box (NaN: no box)
-  double whisker_low = 0.0, whisker_high = 0.0;   // the whiskers' ends
-  double mean = 0.0, se = 0.0;                    // the black bar (NaN mean: none; NaN se: the mean only)
+  double q1 = 0.0, median = 0.0, q3 = 0.0;       // the box (NaN: no box)
+  double whisker_low = 0.0, whisker_high = 0.0;  // the whiskers' ends
+  double mean = 0.0, se = 0.0;                   // the black bar (NaN mean: none; NaN se: the mean only)
 };
 
 struct StripBoxFigure {

@@ -103,15 +103,16 @@ StudyParticipant enrol_participant(SqliteDb& db, std::string_view study_name, st
                                    std::string_view enrolled) {
   const StudyDefinition study = require_study(db, study_name);
   if (auto existing = query_participant(db, study_name, learner)) return *existing;
-  auto count = db.prepare("SELECT count(*) FROM study_participants WHERE study_id = (SELECT id FROM studies WHERE name = ?1)");
+  auto count =
+      db.prepare("SELECT count(*) FROM study_participants WHERE study_id = (SELECT id FROM studies WHERE name = ?1)");
   count.bind(1, study_name).step();
   const int enrolled_so_far = static_cast<int>(count.column_int(0));
   count.run();
   if (enrolled_so_far >= study.capacity()) {
-    throw InputError("study \"" + study.name + "\"",
-                     "is full: all " + std::to_string(study.capacity()) + " places (" +
-                         std::to_string(study.target_per_condition) + " per condition) are taken; \"" +
-                         std::string(learner) + "\" was not enrolled");
+    throw InputError("study \"" + study.name + "\"", "is full: all " + std::to_string(study.capacity()) + " places (" +
+                                                         std::to_string(study.target_per_condition) +
+                                                         " per condition) are taken; \"" + std::string(learner) +
+                                                         "\" was not enrolled");
   }
   const StudyParticipant participant{std::string(learner), enrolled_so_far + 1,
                                      assignment_sequence(study)[static_cast<std::size_t>(enrolled_so_far)],

@@ -18,7 +18,7 @@ void validate_study(const StudyDefinition& study);
 // Throws sc::InputError when a study of that name exists.
 void insert_study(SqliteDb& db, const StudyDefinition& study);
 std::optional<StudyDefinition> query_study(SqliteDb& db, std::string_view name);
-std::vector<StudyDefinition> query_studies(SqliteDb& db);  // by name
+std::vector<StudyDefinition> query_studies(SqliteDb& db);                                // by name
 std::vector<StudyParticipant> query_participants(SqliteDb& db, std::string_view study);  // by seq
 std::optional<StudyParticipant> query_participant(SqliteDb& db, std::string_view study, std::string_view learner);
 // Enrols `learner` (created if new) as the next participant with the next condition of the study's

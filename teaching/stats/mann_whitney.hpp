@@ -16,13 +16,13 @@ namespace sc::stats {
 enum class MannWhitneyMethod { Auto, Exact, Asymptotic };
 
 struct MannWhitneyResult {
-  double u = 0.0;      // U of the first sample
-  double p = 1.0;      // two-sided p-value
+  double u = 0.0;                                       // U of the first sample
+  double p = 1.0;                                       // two-sided p-value
   MannWhitneyMethod method = MannWhitneyMethod::Exact;  // the one used (never Auto)
-  double z = 0.0;      // asymptotic: the continuity-corrected z of max(U1, U2); exact: NaN
-  bool ties = false;   // some value occurs more than once in the pooled sample
-  double effect = 0.0; // U / (n1 n2): the probability that a value of the first sample beats one of the second
-                       // (ties count half), the common-language effect size; 0.5 = no difference
+  double z = 0.0;       // asymptotic: the continuity-corrected z of max(U1, U2); exact: NaN
+  bool ties = false;    // some value occurs more than once in the pooled sample
+  double effect = 0.0;  // U / (n1 n2): the probability that a value of the first sample beats one of the second
+                        // (ties count half), the common-language effect size; 0.5 = no difference
 };
 
 // Throws std::invalid_argument when a sample is empty or holds a non-finite value.

@@ -11,8 +11,8 @@ namespace sc::stats {
 struct SampleSummary {
   int n = 0;
   double mean = 0.0;
-  double sd = 0.0;      // NaN when n < 2
-  double se = 0.0;      // sd / sqrt(n); NaN when n < 2
+  double sd = 0.0;  // NaN when n < 2
+  double se = 0.0;  // sd / sqrt(n); NaN when n < 2
   double min = 0.0, q1 = 0.0, median = 0.0, q3 = 0.0, max = 0.0;
   double whisker_low = 0.0, whisker_high = 0.0;
 };

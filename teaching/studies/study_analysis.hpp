@@ -20,18 +20,18 @@ struct ConditionResult {
   std::string name;       // as the paper prints it ("Time Heuristic")
   int enrolled = 0;
   int target = 0;
-  std::vector<double> improvements;  // of the counted participants, in enrolment order
-  stats::SampleSummary improvement;  // of `improvements`; improvement.n is the condition's N
+  std::vector<double> improvements;    // of the counted participants, in enrolment order
+  stats::SampleSummary improvement;    // of `improvements`; improvement.n is the condition's N
   stats::SampleSummary pretest, eval;  // the counted participants' mean pre-test and evaluation rewards
 };
 
 struct ConditionComparison {
   std::string a, b;  // condition keys; U is a's
   int n_a = 0, n_b = 0;
-  double mean_difference = 0.0;             // mean improvement of a - of b (NaN when one is empty)
+  double mean_difference = 0.0;                  // mean improvement of a - of b (NaN when one is empty)
   std::optional<stats::MannWhitneyResult> test;  // none when a condition has no counted participant
-  double p_holm = 0.0;                      // Holm-adjusted over the pairs tested (NaN when not tested)
-  bool significant = false;                 // p_holm <= alpha
+  double p_holm = 0.0;                           // Holm-adjusted over the pairs tested (NaN when not tested)
+  bool significant = false;                      // p_holm <= alpha
 };
 
 struct StudyAnalysis {

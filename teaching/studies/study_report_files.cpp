@@ -34,7 +34,11 @@ Json summary_json(const stats::SampleSummary& s) {
 }
 
 Json comparison_json(const ConditionComparison& c) {
-  Json j{{"a", c.a},         {"b", c.b},   {"n_a", c.n_a}, {"n_b", c.n_b}, {"mean_difference", json_number(c.mean_difference)},
+  Json j{{"a", c.a},
+         {"b", c.b},
+         {"n_a", c.n_a},
+         {"n_b", c.n_b},
+         {"mean_difference", json_number(c.mean_difference)},
          {"tested", c.test.has_value()}};
   if (c.test) {
     j["u"] = c.test->u;
@@ -100,8 +104,8 @@ std::string comparisons_csv(const StudyAnalysis& analysis) {
         << number(c.mean_difference) << ',';
     if (c.test) {
       out << number(c.test->u) << ',' << number(c.test->effect) << ','
-          << (c.test->method == stats::MannWhitneyMethod::Exact ? "exact" : "normal") << ',' << number(c.test->z)
-          << ',' << number(c.test->p) << ',' << number(c.p_holm) << ',' << (c.significant ? "yes" : "no") << '\n';
+          << (c.test->method == stats::MannWhitneyMethod::Exact ? "exact" : "normal") << ',' << number(c.test->z) << ','
+          << number(c.test->p) << ',' << number(c.p_holm) << ',' << (c.significant ? "yes" : "no") << '\n';
     } else {
       out << ",,not tested,,,,\n";
     }

@@ -13,10 +13,13 @@ namespace {
 using review::html_escape;
 
 constexpr const char* kStyle = R"(
-body{font-family:"DejaVu Sans",Verdana,sans-serif;background:#fff;color:#1e2126;margin:0;padding:24px 40px;line-height:1.45;max-width:1200px}
-h1{font-size:26px;margin:0 0 4px} h2{font-size:20px;margin:30px 0 8px;border-bottom:1px solid #d5d9df;padding-bottom:4px}
+body{font-family:"DejaVu Sans",Verdana,sans-serif;background:#fff;color:#1e2126;margin:0;padding:24px 40px;
+line-height:1.45;max-width:1200px}
+h1{font-size:26px;margin:0 0 4px}
+h2{font-size:20px;margin:30px 0 8px;border-bottom:1px solid #d5d9df;padding-bottom:4px}
 p.note{color:#5f6670;margin:4px 0}
-table{border-collapse:collapse;margin:8px 0 16px;font-size:14px} th,td{padding:4px 10px;border-bottom:1px solid #e3e6ea;text-align:left}
+table{border-collapse:collapse;margin:8px 0 16px;font-size:14px}
+th,td{padding:4px 10px;border-bottom:1px solid #e3e6ea;text-align:left}
 th{color:#5f6670;font-weight:600} td.num{text-align:right;font-variant-numeric:tabular-nums}
 .sig{font-weight:700;color:#0b6e4f} .muted{color:#8a929c}
 figure{margin:10px 0 20px} figure img{max-width:100%;height:auto;border:1px solid #e3e6ea}
@@ -34,8 +37,7 @@ void definition(std::ostringstream& h, const StudyAnalysis& a) {
   const auto& s = a.study;
   h << "<p class=note>Task <b>" << html_escape(s.task) << "</b>; " << s.conditions.size() << " conditions, target "
     << s.target_per_condition << " participants each; randomisation seed " << s.seed << "; created "
-    << html_escape(s.created) << ". " << a.participants.size() << " enrolled, " << a.counted()
-    << " counted.</p>\n";
+    << html_escape(s.created) << ". " << a.participants.size() << " enrolled, " << a.counted() << " counted.</p>\n";
 }
 
 void condition_table(std::ostringstream& h, const StudyAnalysis& a) {

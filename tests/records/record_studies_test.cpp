@@ -15,8 +15,12 @@ namespace sc::records {
 namespace {
 
 StudyDefinition pilot(int per_condition = 2) {
-  return {"pilot", "parking", {"skills", "time-heuristic", "full-trajectory"}, per_condition,
-          0xfedcba9876543210ULL, "2024-05-01T09:00:00.000Z"};
+  return {"pilot",
+          "parking",
+          {"skills", "time-heuristic", "full-trajectory"},
+          per_condition,
+          0xfedcba9876543210ULL,
+          "2024-05-01T09:00:00.000Z"};
 }
 
 NewSession study_session(const std::string& learner, const std::string& condition,
@@ -39,7 +43,8 @@ TEST(RecordStudies, DefinitionRoundTripsAndNamesAreUnique) {
   auto one = pilot();
   one.name = "one";
   one.conditions = {"skills"};
-  EXPECT_EQ(test::error_of([&] { store.create_study(one); }), "study \"one\": needs at least two conditions to compare");
+  EXPECT_EQ(test::error_of([&] { store.create_study(one); }),
+            "study \"one\": needs at least two conditions to compare");
   one.conditions = {"skills", "drills", "skills"};
   EXPECT_EQ(test::error_of([&] { store.create_study(one); }), "study \"one\": names the condition \"skills\" twice");
   EXPECT_EQ(store.list_studies().size(), 1u);
@@ -96,9 +101,10 @@ TEST(RecordStudies, ASessionJoinsOnlyWithItsParticipantsAssignment) {
 void make_version1_database(const std::filesystem::path& dir) {
   SqliteDb db(dir / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate);
   migrate(db, schema_migrations().first(1), "v1");
-  db.exec("INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
-          "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
-          " '2024-05-01T10:00:00.000Z')");
+  db.exec(
+      "INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
+      "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
+      " '2024-05-01T10:00:00.000Z')");
 }
 
 // Export, report and review open read-only: they read an older database as if upgraded, and leave the file
@@ -122,9 +128,10 @@ TEST(RecordStudies, AVersion1DatabaseIsUpgradedWithItsData) {
   {
     SqliteDb db(dir / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate);
     migrate(db, schema_migrations().first(1), "v1");
-    db.exec("INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
-            "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
-            " '2024-05-01T10:00:00.000Z')");
+    db.exec(
+        "INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
+        "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
+        " '2024-05-01T10:00:00.000Z')");
     ASSERT_EQ(db.query_int("PRAGMA user_version"), 1);
   }
   LearnerStore store(dir);

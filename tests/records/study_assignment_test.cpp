@@ -11,7 +11,8 @@ namespace sc::records {
 namespace {
 
 StudyDefinition study(int target, std::uint64_t seed) {
-  return {"pilot", "parking", {"skills", "time-heuristic", "full-trajectory"}, target, seed, "2024-05-01T10:00:00.000Z"};
+  return {"pilot", "parking", {"skills", "time-heuristic", "full-trajectory"},
+          target,  seed,      "2024-05-01T10:00:00.000Z"};
 }
 
 TEST(StudyAssignment, EveryConditionGetsExactlyItsTarget) {

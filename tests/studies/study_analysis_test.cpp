@@ -61,8 +61,8 @@ TEST(StudyAnalysis, SimulatedCohortMatchesAnIndependentComputation) {
   const records::LearnerStore store(cohort.data_dir, records::StoreOptions{.read_only = true});
   const auto study = store.study(test::kCohortStudy);
   ASSERT_TRUE(study);
-  const StudyAnalysis a = analyse_study(
-      *study, participant_outcomes(store.study_participants(test::kCohortStudy), store.study_sessions(test::kCohortStudy)));
+  const StudyAnalysis a = analyse_study(*study, participant_outcomes(store.study_participants(test::kCohortStudy),
+                                                                     store.study_sessions(test::kCohortStudy)));
   const Improvements expected = improvements_from_sql(store.database_path());
 
   // Participants: 11 enrolled, 9 counted; the unfinished and the never-started are listed with the reason.

@@ -29,8 +29,8 @@ StudyCohort build_cohort() {
   cohort.data_dir = scratch_path("studies", "cohort_" + std::to_string(::getpid()));
   std::filesystem::remove_all(cohort.data_dir);
   records::LearnerStore store(cohort.data_dir);
-  store.create_study({kCohortStudy, "parking", {"skills", "time-heuristic", "full-trajectory"}, 4, 11,
-                      "2024-05-01T09:00:00.000Z"});
+  store.create_study(
+      {kCohortStudy, "parking", {"skills", "time-heuristic", "full-trajectory"}, 4, 11, "2024-05-01T09:00:00.000Z"});
   const std::unique_ptr<TaskKit> kit = make_task_kit(TaskKind::parking, {}, GoalRegion::StudyCorner);
   int tick = 0;
   TimestampSource clock = [&tick] {

@@ -32,8 +32,8 @@ TEST(StudyCommand, CreateEnrolLearnStatusAndAFullStudy) {
   EXPECT_NE(enrolled.output.find("enrolled \"Ada\" in study \"duo\" as participant 1 of 2"), std::string::npos)
       << enrolled.output;
 
-  const auto learned = test::run_skillcoach("learn --data-dir " + quoted(dir) +
-                                            " --study duo --learner Ada --pretest 1 --eval 1");
+  const auto learned =
+      test::run_skillcoach("learn --data-dir " + quoted(dir) + " --study duo --learner Ada --pretest 1 --eval 1");
   ASSERT_EQ(learned.exit_code, 0) << learned.output;
   // The participant is not told the condition.
   for (const char* hidden : {"skills", "Skills", "full-trajectory", "Full Trajectory", "condition"})
@@ -45,6 +45,10 @@ TEST(StudyCommand, CreateEnrolLearnStatusAndAFullStudy) {
     EXPECT_EQ(sessions[0].session.condition, s.study_participants("duo")[0].condition);
     EXPECT_TRUE(sessions[0].session.finished);
   }
+  const auto wrong_task =
+      test::run_skillcoach("learn --data-dir " + quoted(dir) + " --study duo --learner Bo --task writing");
+  EXPECT_EQ(wrong_task.exit_code, 2);
+  EXPECT_EQ(wrong_task.output, "skillcoach: error: --task: study \"duo\" is a parking study\n");
   const auto again = test::run_skillcoach("learn --data-dir " + quoted(dir) + " --study duo --learner Ada");
   EXPECT_EQ(again.exit_code, 2);
   EXPECT_EQ(again.output, "skillcoach: error: Ada: has already completed study \"duo\" (session 1)\n");
@@ -88,8 +92,8 @@ TEST(StudyReportCommand, WritesEveryFileWithTheAnalysisNumbers) {
     EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
 
   const records::LearnerStore store(cohort.data_dir, records::StoreOptions{.read_only = true});
-  const StudyAnalysis a = analyse_study(*store.study("cohort"), participant_outcomes(store.study_participants("cohort"),
-                                                                                     store.study_sessions("cohort")));
+  const StudyAnalysis a = analyse_study(
+      *store.study("cohort"), participant_outcomes(store.study_participants("cohort"), store.study_sessions("cohort")));
   const Json j = read_json_file(out / "study_report.json");
   ASSERT_EQ(j["conditions"].size(), a.conditions.size());
   for (std::size_t i = 0; i < a.conditions.size(); ++i) {
@@ -107,10 +111,10 @@ TEST(StudyReportCommand, WritesEveryFileWithTheAnalysisNumbers) {
 
 TEST(StudyReportCommand, BadInputIsOneLineAndExitCode2) {
   const auto out = test::fresh_scratch_dir("study-report-bad");
-  records::LearnerStore(out / "data").create_study(
-      {"pilot", "parking", {"skills", "drills"}, 2, 1, "2024-05-01T09:00:00.000Z"});
-  const auto unknown = test::run_skillcoach("study-report --store " + quoted(out / "data") +
-                                            " --study nope --out " + quoted(out));
+  records::LearnerStore(out / "data")
+      .create_study({"pilot", "parking", {"skills", "drills"}, 2, 1, "2024-05-01T09:00:00.000Z"});
+  const auto unknown =
+      test::run_skillcoach("study-report --store " + quoted(out / "data") + " --study nope --out " + quoted(out));
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_EQ(unknown.output,
             "skillcoach: error: " + (out / "data" / "skillcoach.db").string() + ": has no study \"nope\"\n");
@@ -119,11 +123,11 @@ TEST(StudyReportCommand, BadInputIsOneLineAndExitCode2) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.output, "skillcoach: error: " + (out / "none" / "skillcoach.db").string() + ": no such database\n");
   test::write_bytes(out / "notes.txt", "not a database");
-  const auto foreign =
-      test::run_skillcoach("study-report --store " + quoted(out / "notes.txt") + " --study cohort --out " + quoted(out));
+  const auto foreign = test::run_skillcoach("study-report --store " + quoted(out / "notes.txt") +
+                                            " --study cohort --out " + quoted(out));
   EXPECT_EQ(foreign.exit_code, 2);
-  EXPECT_EQ(foreign.output,
-            "skillcoach: error: " + (out / "notes.txt").string() + ": is neither a data directory nor a skillcoach.db file\n");
+  EXPECT_EQ(foreign.output, "skillcoach: error: " + (out / "notes.txt").string() +
+                                ": is neither a data directory nor a skillcoach.db file\n");
 }
 
 }  // namespace

@@ -10,8 +10,9 @@ namespace {
 using Pairs = std::vector<std::pair<std::string, std::string>>;
 
 TEST(StudyComparisons, ThePapersFirstStudy) {
-  EXPECT_EQ(planned_comparisons({"full-trajectory", "time-heuristic", "skills"}),
-            (Pairs{{"skills", "full-trajectory"}, {"skills", "time-heuristic"}, {"time-heuristic", "full-trajectory"}}));
+  EXPECT_EQ(
+      planned_comparisons({"full-trajectory", "time-heuristic", "skills"}),
+      (Pairs{{"skills", "full-trajectory"}, {"skills", "time-heuristic"}, {"time-heuristic", "full-trajectory"}}));
 }
 
 TEST(StudyComparisons, TheDrillsStudyAndAdaptive) {

@@ -19,9 +19,11 @@ records::SessionSummary session(std::int64_t id, const std::string& learner, boo
 }
 
 TEST(StudyOutcomes, TheFirstSessionCountsWhenFinishedWithBothScores) {
-  const std::vector<records::StudyParticipant> participants{
-      {"A", 1, "skills", ""}, {"B", 2, "drills", ""}, {"C", 3, "skills", ""}, {"D", 4, "drills", ""},
-      {"E", 5, "skills", ""}};
+  const std::vector<records::StudyParticipant> participants{{"A", 1, "skills", ""},
+                                                            {"B", 2, "drills", ""},
+                                                            {"C", 3, "skills", ""},
+                                                            {"D", 4, "drills", ""},
+                                                            {"E", 5, "skills", ""}};
   const std::vector<records::SessionSummary> sessions{
       session(1, "A", true, -2.0, -1.0), session(2, "B", false, -2.0, std::nullopt),
       session(3, "A", true, -2.0, 5.0),  // a later session of A: ignored, whatever its result

@@ -21,8 +21,8 @@ ParticipantOutcome counted(int seq, const std::string& learner, const std::strin
 }
 
 StudyAnalysis small_study() {
-  const records::StudyDefinition study{"small", "writing", {"skills", "time-heuristic", "full-trajectory"}, 2, 9,
-                                       "2024-05-01T09:00:00.000Z"};
+  const records::StudyDefinition study{"small", "writing", {"skills", "time-heuristic", "full-trajectory"},
+                                       2,       9,         "2024-05-01T09:00:00.000Z"};
   std::vector<ParticipantOutcome> outcomes{counted(1, "A, \"the first\"", "skills", -3.0, -1.0),
                                            counted(2, "<B>", "time-heuristic", -3.0, -2.5),
                                            counted(3, "C", "skills", -2.0, -1.0)};

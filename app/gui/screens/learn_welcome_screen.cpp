@@ -131,8 +131,8 @@ class LearnWelcomeScreen final : public Screen {
     if (ImGui::RadioButton("No study (choose the condition)", flow_.study.empty())) flow_.study.clear();
     for (const auto& study : studies) {
       const auto enrolled = flow_.store(services_).study_participants(study.name).size();
-      const std::string label = study.name + " (" + std::to_string(enrolled) + " of " +
-                                std::to_string(study.capacity()) + " enrolled)";
+      const std::string label =
+          study.name + " (" + std::to_string(enrolled) + " of " + std::to_string(study.capacity()) + " enrolled)";
       if (ImGui::RadioButton(label.c_str(), flow_.study == study.name)) flow_.study = study.name;
     }
   }
