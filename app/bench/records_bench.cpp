@@ -69,7 +69,7 @@ void BM_RecordTrial(benchmark::State& state) {
   const std::string trajectory = realistic_trajectory(kSteps);
   {
     LearnerStore store(dir);
-    const auto session = store.begin_session({"Bench", "parking", "adaptive", 1, "{}", "2024-05-01T10:00:00.000Z"});
+    const auto session = store.begin_session({"Bench", "parking", "adaptive", 1, "{}", "2024-05-01T10:00:00.000Z", ""});
     const auto trial = bench_trial(session, trajectory);
     for (auto _ : state) {
       const auto result = store.record_trial(trial);
@@ -92,7 +92,7 @@ void BM_RecordTrialSyncNormal(benchmark::State& state) {
     db.exec("PRAGMA synchronous = NORMAL; PRAGMA foreign_keys = ON");
     migrate(db, schema_migrations(), "bench");
     const auto learner = insert_learner_if_new(db, "Bench", "t");
-    const auto session = insert_session(db, learner, {"Bench", "parking", "adaptive", 1, "{}", "t"});
+    const auto session = insert_session(db, learner, {"Bench", "parking", "adaptive", 1, "{}", "t", ""});
     TrialWrite write{bench_trial(session, trajectory), 0};
     for (auto _ : state) {
       ++write.seq;

@@ -36,6 +36,8 @@ struct LearnOptions {
   std::string lot = "auto";  // parking: auto (study corner for a first session), study-corner, whole-lot
   unsigned long long seed = 20221128;
   int trial_delay_ms = 0;
+  std::string study;  // study mode: the study assigns the condition (and fixes the task); it is not printed
+  bool task_given = false, condition_given = false;
 };
 
 void print_trial(const TrainingSession& s, const std::string& kind, const SubmittedTrial& kept) {
@@ -44,9 +46,15 @@ void print_trial(const TrainingSession& s, const std::string& kind, const Submit
   std::fflush(stdout);
 }
 
-// The round's practice before it starts: what a learner is told, and the budget a researcher checks.
+// The round's practice before it starts: what a learner is told, and the budget a researcher checks. In a
+// study the participant must not learn their condition: only the round's size is printed.
 void print_plan(const TrainingSession& s) {
   const Curriculum& c = s.curriculum();
+  if (!s.settings().study.empty()) {
+    std::printf("plan round %d trials %d minutes %d\n", s.round(), c.trials(), s.practice_minutes());
+    std::fflush(stdout);
+    return;
+  }
   std::printf("plan round %d condition %s trials %d steps %d budget %d (reference: %s) minutes %d\n", s.round(),
               std::string(condition_key(c.condition)).c_str(), c.trials(), c.total_steps(), c.budget_steps,
               budget_reference(s.curriculum_config()).c_str(), s.practice_minutes());
@@ -111,13 +119,40 @@ std::string lot_words(const SessionSettings& settings) {
                                                           : " on the whole lot";
 }
 
-int run(const LearnOptions& o) {
+// Study mode: the learner is enrolled (if not yet) and gets the study's task and their assigned condition.
+// A participant has one session in the study: an unfinished one resumes, a finished one ends the study for
+// them.
+LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store) {
+  const auto study = store.study(o.study);
+  if (!study) throw InputError(store.database_path().string(), "has no study \"" + o.study + "\"");
+  if (o.condition_given) throw InputError("--condition", "cannot be combined with --study: the study assigns it");
+  const TaskKind task = parse_task_kind(study->task, "study task");
+  if (o.task_given && o.task != task)
+    throw InputError("--task", "study \"" + o.study + "\" is a " + study->task + " study");
+  o.task = task;
+  const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
+  if (point && point->session.study != o.study)
+    throw InputError(o.learner, "has an unfinished " + study->task + " session (" + std::to_string(point->session.id) +
+                                    ") outside study \"" + o.study + "\"; finish it first");
+  for (const auto& s : store.study_sessions(o.study))
+    if (s.session.learner == o.learner && s.session.finished)
+      throw InputError(
+          o.learner, "has already completed study \"" + o.study + "\" (session " + std::to_string(s.session.id) + ")");
+  const records::StudyParticipant participant = store.enrol(o.study, o.learner, records::utc_timestamp_now());
+  o.condition = participant.condition;
+  std::printf("study \"%s\": participant %d\n", o.study.c_str(), participant.seq);
+  return o;
+}
+
+int run(LearnOptions o) {
   if (o.task == TaskKind::writing && o.lot != "auto")
     throw InputError("--lot", "is a parking setting (writing has no lot)");
   records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
+  if (!o.study.empty()) o = enrol_in_study(o, store);
   const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
-  const SessionSettings settings = point ? settings_of_session(point->session) : new_settings(o, store);
+  SessionSettings settings = point ? settings_of_session(point->session) : new_settings(o, store);
+  if (!point) settings.study = o.study;
   const auto kit = make_task_kit(o.task, {}, settings.lot());
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   std::unique_ptr<TrainingSession> session;
@@ -157,10 +192,13 @@ int run(const LearnOptions& o) {
 
 CommandRunner setup_learn(CLI::App& sub) {
   auto o = std::make_shared<LearnOptions>();
-  add_task_option(sub, o->task, "parking (default) or writing");
+  CLI::Option* task = add_task_option(sub, o->task, "parking (default) or writing");
   sub.add_option("--data-dir", o->data_dir, "Directory of the learner database (default: XDG data directory)");
   sub.add_option("--learner", o->learner, "Learner's name")->capture_default_str();
-  sub.add_option("--condition", o->condition, "Study condition (research mode)")->capture_default_str();
+  CLI::Option* condition =
+      sub.add_option("--condition", o->condition, "Study condition (research mode)")->capture_default_str();
+  sub.add_option("--study", o->study,
+                 "Study mode: enrol the learner (if not yet) and train in the condition the study assigns (not shown)");
   sub.add_option("--device", o->device, "Device recorded with the trials")->capture_default_str();
   sub.add_option("--pretest", o->pretest, "Pre-test scenarios (N_s)")->capture_default_str();
   sub.add_option("--eval", o->eval, "Evaluation scenarios per round")->capture_default_str();
@@ -176,7 +214,11 @@ CommandRunner setup_learn(CLI::App& sub) {
   sub.add_option("--seed", o->seed, "Session seed")->capture_default_str();
   sub.add_option("--trial-delay-ms", o->trial_delay_ms, "Pause after each kept trial (crash tests)")
       ->check(CLI::Range(0, 60000));
-  return [o] { return run(*o); };
+  return [o, task, condition] {
+    o->task_given = task->count() > 0;
+    o->condition_given = condition->count() > 0;
+    return run(*o);
+  };
 }
 
 const CommandRegistration kLearnCommandRegistration{

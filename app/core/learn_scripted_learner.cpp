@@ -70,7 +70,7 @@ void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
       case SessionPhase::Pretest:
       case SessionPhase::Evaluation: {
         const bool pre = s.phase() == SessionPhase::Pretest;
-        const Json attempt = scripted_attempt(s.test_expert_trial(), pre ? 0.6 : 0.85,
+        const Json attempt = scripted_attempt(s.test_expert_trial(), pre ? hooks.skills.pretest : hooks.skills.eval,
                                               attempt_seed(s, pre ? 0 : 3, s.item_index()), device);
         const SubmittedTrial kept = s.submit_test_trial(attempt, {});
         if (hooks.after_trial) hooks.after_trial(s, pre ? "pretest" : "eval", kept);
@@ -84,7 +84,8 @@ void play_scripted_round(TrainingSession& s, const ScriptedRunHooks& hooks) {
         const int item = s.current_item();
         const Json reference = s.kit().drill_trial(s.drill(item));
         s.record_demo(item, reference, {});
-        const double skill = std::min(0.95, 0.7 + 0.05 * practice_done);
+        const double skill =
+            std::min(hooks.skills.practice_end, hooks.skills.practice_start + 0.05 * practice_done);
         const SubmittedTrial kept =
             s.submit_practice(scripted_attempt(reference, skill, attempt_seed(s, 2, s.item_index()), device), {});
         ++practice_done;

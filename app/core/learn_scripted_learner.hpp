@@ -25,12 +25,20 @@ namespace sc {
 
 // The scripted learner's whole behaviour in a session: pre-test at skill 0.6, each practice attempt a
 // little better (0.7 rising to 0.95), evaluation at 0.85; a demo is recorded before each practice slot.
+// A simulated cohort (the study report's test) gives each learner their own levels.
+struct ScriptedSkills {
+  double pretest = 0.6;
+  double practice_start = 0.7;  // + 0.05 per practice attempt, up to practice_end
+  double practice_end = 0.95;
+  double eval = 0.85;
+};
 // Plays until `stop(session)` is true or the round's summary is reached. `after_trial` runs after each
 // kept trial (the crash test prints there; the CLI may sleep to let a test kill it mid-session).
 struct ScriptedRunHooks {
   std::function<bool(const TrainingSession&)> stop;  // optional
   std::function<void(const TrainingSession&, const std::string& kind, const SubmittedTrial&)> after_trial;
   std::function<void(const TrainingSession&)> after_analysis;  // optional: the round's curriculum is made
+  ScriptedSkills skills;
 };
 void play_scripted_round(TrainingSession& session, const ScriptedRunHooks& hooks = {});
 

@@ -8,6 +8,7 @@
 #include "engine/core/json_file.hpp"
 #include "teaching/records/database_file_check.hpp"
 #include "teaching/records/record_queries.hpp"
+#include "teaching/records/record_studies.hpp"
 #include "teaching/records/record_writes.hpp"
 #include "teaching/records/schema_migrations.hpp"
 #include "teaching/records/sqlite_handle.hpp"
@@ -22,11 +23,12 @@ void require_text(std::string_view value, std::string_view what) {
 // A name shown on screens and in reports: not blank (tabs and newlines count as blank, which the schema's
 // CHECK on spaces alone let through) and free of control characters.
 void require_learner_name(std::string_view name) {
-  require_text(name, "learner name");
+  const std::string what = "learner name";
+  require_text(name, what);
   if (name.find_first_not_of(" \t\n\r\v\f") == std::string_view::npos)
-    throw InputError("learner record", "learner name is blank");
+    throw InputError("learner record", what + " is blank");
   for (unsigned char c : name)
-    if (c < 0x20 || c == 0x7f) throw InputError("learner record", "learner name contains a control character");
+    if (c < 0x20 || c == 0x7f) throw InputError("learner record", what + " contains a control character");
 }
 
 void require_json(const std::string& text, std::string_view what) {
@@ -125,10 +127,7 @@ std::unique_ptr<SqliteDb> LearnerStore::connect() const {
         path_, options_.read_only ? SqliteDb::Mode::ReadOnly : SqliteDb::Mode::ReadWriteCreate);
     db->set_busy_timeout(options_.busy_timeout_ms);
     db->exec("PRAGMA foreign_keys = ON");
-    if (db->is_read_only()) {
-      require_current_schema(*db);
-      return db;
-    }
+    if (db->is_read_only()) return readable_schema(std::move(db));
     // WAL: readers never block the trainer's writes, and a commit is one append to the log.
     // synchronous=FULL: the log is fsynced at every commit, so a finished trial survives a power cut too,
     // not only a crash of the program (NORMAL would only guarantee the latter). A commit per trial
@@ -154,19 +153,23 @@ std::unique_ptr<SqliteDb> LearnerStore::connect_immutable() const {
   try {
     auto db = std::make_unique<SqliteDb>(path_, SqliteDb::Mode::ReadOnly, "immutable=1");
     db->exec("PRAGMA foreign_keys = ON");
-    require_current_schema(*db);
-    return db;
+    return readable_schema(std::move(db));
   } catch (const SqliteError& e) {
     throw InputError(path_.string(), "cannot be opened (" + describe_storage_error(e) + ")");
   }
 }
 
-void LearnerStore::require_current_schema(SqliteDb& db) const {
-  const auto version = db.query_int("PRAGMA user_version");
+// A read-only store (export, report, review) reads an older database through a migrated copy in memory, so
+// the file is never changed; a writable store on a read-only file cannot upgrade it and says so.
+std::unique_ptr<SqliteDb> LearnerStore::readable_schema(std::unique_ptr<SqliteDb> db) const {
+  const auto version = db->query_int("PRAGMA user_version");
+  if (version < current_schema_version() && options_.read_only)
+    return migrated_in_memory(*db, schema_migrations(), path_.string());
   if (version != current_schema_version()) {
     throw InputError(path_.string(), "has schema version " + std::to_string(version) + " and needs upgrading to " +
                                          std::to_string(current_schema_version()) + ", but it is read-only");
   }
+  return db;
 }
 
 void LearnerStore::load_spill_file() {
@@ -203,7 +206,9 @@ std::int64_t LearnerStore::begin_session(const NewSession& session) {
   require_json(session.settings_json, "session settings");
   claim_learner(session.learner);
   const auto id = write_now("start a session for \"" + session.learner + "\"", [&](SqliteDb& db) {
-    return insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
+    const auto session_id = insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
+    if (!session.study.empty()) attach_session_to_study(db, session_id, session);
+    return session_id;
   });
   last_seq_[id] = 0;
   return id;
@@ -393,6 +398,37 @@ std::vector<DiagnosisRecord> LearnerStore::diagnoses_of_session(std::int64_t ses
 
 std::vector<CurriculumRecord> LearnerStore::curricula_of_session(std::int64_t session_id) const {
   return read([&](SqliteDb& db) { return query_curricula(db, session_id); });
+}
+
+void LearnerStore::create_study(const StudyDefinition& study) {
+  validate_study(study);
+  write_now("create study \"" + study.name + "\"", [&](SqliteDb& db) {
+    insert_study(db, study);
+    return 0;
+  });
+}
+
+StudyParticipant LearnerStore::enrol(std::string_view study, std::string_view learner, std::string_view enrolled) {
+  require_learner_name(learner);
+  require_text(enrolled, "enrolment time");
+  return write_now("enrol \"" + std::string(learner) + "\"",
+                   [&](SqliteDb& db) { return enrol_participant(db, study, learner, enrolled); });
+}
+
+std::optional<StudyDefinition> LearnerStore::study(std::string_view name) const {
+  return read([&](SqliteDb& db) { return query_study(db, name); });
+}
+
+std::vector<StudyDefinition> LearnerStore::list_studies() const {
+  return read([](SqliteDb& db) { return query_studies(db); });
+}
+
+std::vector<StudyParticipant> LearnerStore::study_participants(std::string_view study) const {
+  return read([&](SqliteDb& db) { return query_participants(db, study); });
+}
+
+std::vector<SessionSummary> LearnerStore::study_sessions(std::string_view study) const {
+  return read([&](SqliteDb& db) { return query_study_sessions(db, study); });
 }
 
 }  // namespace sc::records

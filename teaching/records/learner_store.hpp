@@ -25,6 +25,7 @@
 #include "teaching/records/learner_lock.hpp"
 #include "teaching/records/pending_writes.hpp"
 #include "teaching/records/record_types.hpp"
+#include "teaching/records/study_records.hpp"
 
 namespace sc::records {
 
@@ -92,12 +93,25 @@ class LearnerStore {
   std::vector<DiagnosisRecord> diagnoses_of_session(std::int64_t session_id) const;   // by round
   std::vector<CurriculumRecord> curricula_of_session(std::int64_t session_id) const;  // by round, drills by index
 
+  // ---- studies (study_records.hpp) ----
+  // Like learners and sessions, these throw sc::InputError instead of queueing: a study and an enrolment
+  // exist before any work. create_study refuses an invalid definition or a name in use.
+  void create_study(const StudyDefinition& study);
+  // Enrols `learner` with the next condition of the study's randomisation (an enrolled learner keeps their
+  // place and condition); a full or unknown study is refused. One transaction: concurrent enrolments never
+  // share a place.
+  StudyParticipant enrol(std::string_view study, std::string_view learner, std::string_view enrolled);
+  std::optional<StudyDefinition> study(std::string_view name) const;
+  std::vector<StudyDefinition> list_studies() const;
+  std::vector<StudyParticipant> study_participants(std::string_view study) const;  // in enrolment order
+  std::vector<SessionSummary> study_sessions(std::string_view study) const;        // oldest first
+
  private:
   std::unique_ptr<SqliteDb> connect() const;
   std::unique_ptr<SqliteDb> connect_immutable() const;
   SqliteDb& connection() const;
   void reconnect();
-  void require_current_schema(SqliteDb& db) const;
+  std::unique_ptr<SqliteDb> readable_schema(std::unique_ptr<SqliteDb> db) const;
   void load_spill_file();
   SaveResult submit(PendingWrite write);
   int next_seq(std::int64_t session_id);

@@ -127,7 +127,8 @@ Json session_to_json(const SessionRow& session) {
           {"settings", payload(session.settings_json)},
           {"started", session.started},
           {"finished", session.finished ? Json(*session.finished) : Json(nullptr)},
-          {"progress", progress_to_json(session.progress)}};
+          {"progress", progress_to_json(session.progress)},
+          {"study", session.study.empty() ? Json(nullptr) : Json(session.study)}};
 }
 
 }  // namespace sc::records

@@ -6,7 +6,8 @@ namespace sc::records {
 namespace {
 
 constexpr std::string_view kSessionColumns =
-    "s.id, l.name, s.task, s.condition, s.seed, s.settings, s.started, s.finished, s.round, s.phase, s.item_index";
+    "s.id, l.name, s.task, s.condition, s.seed, s.settings, s.started, s.finished, s.round, s.phase, s.item_index,"
+    " (SELECT name FROM studies WHERE id = s.study_id)";
 
 SessionRow read_session(const SqliteStatement& row) {
   SessionRow s;
@@ -21,12 +22,46 @@ SessionRow read_session(const SqliteStatement& row) {
   s.progress.round = static_cast<int>(row.column_int(8));
   s.progress.phase = session_phase_from_string(row.column_text(9), "sessions.phase");
   s.progress.item_index = static_cast<int>(row.column_int(10));
+  if (!row.column_is_null(11)) s.study = row.column_text(11);
   return s;
 }
 
 std::string session_select(std::string_view where) {
   return "SELECT " + std::string(kSessionColumns) + " FROM sessions s JOIN learners l ON l.id = s.learner_id " +
          std::string(where);
+}
+
+// Pre-test mean: first round's pre-test; evaluation mean: the last round that has an evaluation.
+constexpr std::string_view kSummaryColumns =
+    ", (SELECT count(*) FROM trials t WHERE t.session_id = s.id),"
+    " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'pretest' AND t.round ="
+    "   (SELECT min(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'pretest')),"
+    " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'eval' AND t.round ="
+    "   (SELECT max(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'eval')),"
+    " s.learner_id FROM sessions s JOIN learners l ON l.id = s.learner_id ";
+
+struct LearnerSessionSummary {
+  std::int64_t learner_id = 0;
+  SessionSummary summary;
+};
+
+// Sessions matching `where` (may bind ?1 to `text`), oldest first, with their review summaries.
+std::vector<LearnerSessionSummary> query_session_summaries(SqliteDb& db, std::string_view where,
+                                                           std::string_view text = {}) {
+  auto stmt = db.prepare("SELECT " + std::string(kSessionColumns) + std::string(kSummaryColumns) + std::string(where) +
+                         " ORDER BY s.started, s.id");
+  if (!text.empty()) stmt.bind(1, text);
+  std::vector<LearnerSessionSummary> out;
+  while (stmt.step()) {
+    SessionSummary summary;
+    summary.session = read_session(stmt);
+    summary.trial_count = static_cast<int>(stmt.column_int(12));
+    summary.pretest_mean = stmt.column_optional_double(13);
+    summary.eval_mean = stmt.column_optional_double(14);
+    if (summary.pretest_mean && summary.eval_mean) summary.improvement = *summary.eval_mean - *summary.pretest_mean;
+    out.push_back({stmt.column_int(15), std::move(summary)});
+  }
+  return out;
 }
 
 }  // namespace
@@ -74,24 +109,8 @@ std::vector<LearnerOverview> query_learners(SqliteDb& db) {
     by_id[list.column_int(0)] = learners.size();
     learners.push_back({list.column_int(0), list.column_text(1), list.column_text(2), {}});
   }
-  // Pre-test mean: first round's pre-test; evaluation mean: the last round that has an evaluation.
-  auto stmt =
-      db.prepare("SELECT " + std::string(kSessionColumns) +
-                 ", (SELECT count(*) FROM trials t WHERE t.session_id = s.id),"
-                 " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'pretest' AND t.round ="
-                 "   (SELECT min(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'pretest')),"
-                 " (SELECT avg(score) FROM trials t WHERE t.session_id = s.id AND t.kind = 'eval' AND t.round ="
-                 "   (SELECT max(round) FROM trials u WHERE u.session_id = s.id AND u.kind = 'eval')),"
-                 " s.learner_id FROM sessions s JOIN learners l ON l.id = s.learner_id ORDER BY s.started, s.id");
-  while (stmt.step()) {
-    SessionSummary summary;
-    summary.session = read_session(stmt);
-    summary.trial_count = static_cast<int>(stmt.column_int(11));
-    summary.pretest_mean = stmt.column_optional_double(12);
-    summary.eval_mean = stmt.column_optional_double(13);
-    if (summary.pretest_mean && summary.eval_mean) summary.improvement = *summary.eval_mean - *summary.pretest_mean;
-    learners[by_id.at(stmt.column_int(14))].sessions.push_back(std::move(summary));
-  }
+  for (auto& row : query_session_summaries(db, ""))
+    learners[by_id.at(row.learner_id)].sessions.push_back(std::move(row.summary));
   return learners;
 }
 
@@ -151,6 +170,13 @@ std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session
     }
     out.push_back(std::move(c));
   }
+  return out;
+}
+
+std::vector<SessionSummary> query_study_sessions(SqliteDb& db, std::string_view study) {
+  std::vector<SessionSummary> out;
+  for (auto& row : query_session_summaries(db, "WHERE s.study_id = (SELECT id FROM studies WHERE name = ?1)", study))
+    out.push_back(std::move(row.summary));
   return out;
 }
 

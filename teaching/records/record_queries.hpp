@@ -19,6 +19,8 @@ int query_session_count(SqliteDb& db, std::string_view learner, std::string_view
 int query_trial_count(SqliteDb& db, std::int64_t session_id);
 int query_last_seq(SqliteDb& db, std::int64_t session_id);  // 0 when the session has no trial yet
 std::vector<LearnerOverview> query_learners(SqliteDb& db);
+// The sessions of a study (every participant's), oldest first, with their review summaries.
+std::vector<SessionSummary> query_study_sessions(SqliteDb& db, std::string_view study);
 std::vector<StoredTrial> query_trials(SqliteDb& db, std::int64_t session_id);
 std::vector<DiagnosisRecord> query_diagnoses(SqliteDb& db, std::int64_t session_id);
 std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session_id);

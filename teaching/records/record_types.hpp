@@ -37,6 +37,9 @@ struct NewSession {
   std::uint64_t seed = 0;            // regenerates the session's scenarios on resume
   std::string settings_json = "{}";  // free-form session settings (N_s, time limits, ...)
   std::string started;               // ISO-8601 UTC
+  // The study the session belongs to (study_records.hpp), empty for none. The learner must be enrolled
+  // in it and `condition` and `task` must be the study's assignment.
+  std::string study;
 };
 
 struct TrialRecord {
@@ -96,6 +99,7 @@ struct SessionRow {
   std::string started;
   std::optional<std::string> finished;
   SessionProgress progress;
+  std::string study;  // empty: not part of a study
 };
 
 // An unfinished session and where it stopped.

@@ -67,10 +67,25 @@ RecordsExport export_records(const LearnerStore& store) {
     for (const auto& summary : learner.sessions) sessions.push_back(exporter.session(summary));
     learners.push_back({{"name", learner.name}, {"created", learner.created}, {"sessions", std::move(sessions)}});
   }
+  Json studies = Json::array();
+  for (const auto& study : store.list_studies()) {
+    Json participants = Json::array();
+    for (const auto& p : store.study_participants(study.name))
+      participants.push_back(
+          {{"learner", p.learner}, {"seq", p.seq}, {"condition", p.condition}, {"enrolled", p.enrolled}});
+    studies.push_back({{"name", study.name},
+                       {"task", study.task},
+                       {"conditions", study.conditions},
+                       {"target_per_condition", study.target_per_condition},
+                       {"seed", study.seed},
+                       {"created", study.created},
+                       {"participants", std::move(participants)}});
+  }
   out.doc = {{"format", kExportFormat},
              {"version", kExportVersion},
              {"schema_version", store.schema_version()},
-             {"learners", std::move(learners)}};
+             {"learners", std::move(learners)},
+             {"studies", std::move(studies)}};
   return out;
 }
 

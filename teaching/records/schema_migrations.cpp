@@ -1,5 +1,7 @@
 #include "teaching/records/schema_migrations.hpp"
 
+#include <sqlite3.h>
+
 #include <array>
 #include <string>
 
@@ -77,8 +79,35 @@ CREATE TABLE drills(
 );
 )sql";
 
-constexpr std::array<Migration, 1> kMigrations{{
+// Version 2: studies. A study's participants and their assigned conditions; a session names its study.
+// UNIQUE(study, seq) makes two enrolments racing for one place impossible (the second one fails).
+constexpr std::string_view kSchemaV2 = R"sql(
+CREATE TABLE studies(
+  id                   INTEGER PRIMARY KEY,
+  name                 TEXT NOT NULL UNIQUE CHECK(length(trim(name)) > 0),
+  task                 TEXT NOT NULL CHECK(length(task) > 0),
+  conditions           TEXT NOT NULL CHECK(json_valid(conditions) AND json_array_length(conditions) >= 2),
+  target_per_condition INTEGER NOT NULL CHECK(target_per_condition >= 1),
+  seed                 INTEGER NOT NULL,
+  created              TEXT NOT NULL
+);
+CREATE TABLE study_participants(
+  id         INTEGER PRIMARY KEY,
+  study_id   INTEGER NOT NULL REFERENCES studies(id) ON DELETE CASCADE,
+  learner_id INTEGER NOT NULL REFERENCES learners(id) ON DELETE CASCADE,
+  seq        INTEGER NOT NULL CHECK(seq >= 1),
+  condition  TEXT NOT NULL CHECK(length(condition) > 0),
+  enrolled   TEXT NOT NULL,
+  UNIQUE(study_id, learner_id),
+  UNIQUE(study_id, seq)
+);
+ALTER TABLE sessions ADD COLUMN study_id INTEGER REFERENCES studies(id) ON DELETE SET NULL;
+CREATE INDEX sessions_by_study ON sessions(study_id) WHERE study_id IS NOT NULL;
+)sql";
+
+constexpr std::array<Migration, 2> kMigrations{{
     {1, "learners, sessions, trials, diagnoses, curricula and drills", kSchemaV1},
+    {2, "studies, their participants, and the study of a session", kSchemaV2},
 }};
 
 }  // namespace
@@ -110,6 +139,20 @@ void migrate(SqliteDb& db, std::span<const Migration> migrations, std::string_vi
   db.exec("PRAGMA application_id = " + std::to_string(kSkillCoachApplicationId));
   db.exec("PRAGMA user_version = " + std::to_string(target));
   transaction.commit();
+}
+
+std::unique_ptr<SqliteDb> migrated_in_memory(SqliteDb& source, std::span<const Migration> migrations,
+                                             std::string_view file) {
+  auto copy = std::make_unique<SqliteDb>(":memory:", SqliteDb::Mode::ReadWriteCreate);
+  sqlite3_backup* backup = sqlite3_backup_init(copy->raw(), "main", source.raw(), "main");
+  if (backup == nullptr) throw SqliteError(sqlite3_extended_errcode(copy->raw()), "copy for reading failed");
+  const int stepped = sqlite3_backup_step(backup, -1);
+  const int finished = sqlite3_backup_finish(backup);
+  if (stepped != SQLITE_DONE || finished != SQLITE_OK)
+    throw SqliteError(stepped != SQLITE_DONE ? stepped : finished, "copy for reading failed");
+  copy->exec("PRAGMA foreign_keys = ON");
+  migrate(*copy, migrations, file);
+  return copy;
 }
 
 }  // namespace sc::records

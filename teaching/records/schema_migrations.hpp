@@ -4,6 +4,7 @@
 // applies the missing migrations in one transaction (all or nothing). Never edit a released migration:
 // append a new one (see docs/database.md).
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string_view>
 
@@ -28,5 +29,9 @@ int current_schema_version();
 // stamps the application id. The caller has checked the file is ours (or empty) and not newer.
 // `file` names the database in errors. Throws SqliteError if SQLite fails (nothing is applied then).
 void migrate(SqliteDb& db, std::span<const Migration> migrations, std::string_view file);
+// A copy of `source` in memory (SQLite's backup API), brought up to the last of `migrations`: how read-only
+// readers see an older database without changing its file. Throws SqliteError if SQLite fails.
+std::unique_ptr<SqliteDb> migrated_in_memory(SqliteDb& source, std::span<const Migration> migrations,
+                                             std::string_view file);
 
 }  // namespace sc::records

@@ -15,6 +15,7 @@ records::NewSession session_record(const SessionSettings& settings, const std::s
   session.seed = settings.seed;
   session.settings_json = settings_to_json(settings).dump();
   session.started = started;
+  session.study = settings.study;
   return session;
 }
 

@@ -45,6 +45,7 @@ SessionSettings settings_of_session(const records::SessionRow& row) {
   settings.learner = row.learner;
   settings.condition = parse_condition(row.condition);
   settings.seed = row.seed;
+  settings.study = row.study;
   const Json json = parse_json_text(row.settings_json, where);
   read_settings_json(JsonView(json, where), settings);
   settings.validate();

@@ -25,6 +25,8 @@ struct SessionSettings {
   // study corner (3 spots) because the whole lot needs many more skills; a learner's first parking session
   // uses it too (first_session_goal_region), later sessions and free practice the whole lot. Writing: none.
   std::optional<GoalRegion> goal_region;
+  // The study this session is part of (empty: none); `condition` is then the learner's assigned one.
+  std::string study;
   GoalRegion lot() const { return goal_region.value_or(GoalRegion::WholeLot); }
 
   void validate() const;  // InputError for an empty learner/device, counts outside 1..50, weak_skills

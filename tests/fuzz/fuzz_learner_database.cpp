@@ -30,7 +30,7 @@ void review_and_export(const LearnerStore& store) {
 }
 
 void record_one_trial(LearnerStore& store) {
-  const auto session = store.begin_session({"Fuzz", "parking", "adaptive", 7, "{}", "2024-05-01T10:00:00.000Z"});
+  const auto session = store.begin_session({"Fuzz", "parking", "adaptive", 7, "{}", "2024-05-01T10:00:00.000Z", ""});
   TrialRecord trial;
   trial.session_id = session;
   trial.task = "parking";

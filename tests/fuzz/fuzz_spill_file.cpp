@@ -22,7 +22,7 @@ const std::string& template_database() {
     std::filesystem::remove_all(dir);
     {
       LearnerStore store(dir);
-      store.begin_session({"Fuzz", "parking", "adaptive", 7, "{}", "2024-05-01T10:00:00.000Z"});
+      store.begin_session({"Fuzz", "parking", "adaptive", 7, "{}", "2024-05-01T10:00:00.000Z", ""});
     }  // closing the last connection checkpoints the WAL into the file
     std::ifstream in(dir / LearnerStore::kDatabaseFileName, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -4,7 +4,8 @@
 // instructions, pre-test, diagnosis, drills (demo + practice), final test and summary, then finishes. The
 // learner database must then hold the whole session, and the summary screenshot must match its golden. Shorter
 // scripts drive one trial with a gamepad (unplugged and plugged in again mid-trial) and with the mouse
-// joystick. Bad script files must be refused with one error line naming the file and exit code 2.
+// joystick, and join a study in research mode. Bad script files must be refused with one error line naming
+// the file and exit code 2.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -243,6 +244,29 @@ TEST(ScriptedGui, AScreenThatNeverShowsFailsTheRunWithExit1) {
   const test::CommandResult run = run_script(script_file("wrong_screen.json"), dir);
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("waiting for screen learn_summary (showing start)"), std::string::npos) << run.output;
+}
+
+// Research mode on the welcome page joins a study: the learner is enrolled, the session starts in the
+// condition the study assigned (and belongs to the study), and the page never names the conditions.
+TEST(ScriptedInput, ResearchModeJoinsAStudy) {
+  const fs::path dir = fresh_dir("research_study");
+  {
+    records::LearnerStore store(dir);
+    store.create_study({"pilot", "parking", {"skills", "full-trajectory"}, 5, 3, "2024-05-01T09:00:00.000Z"});
+    store.enrol("pilot", "A1", "2024-05-01T09:30:00.000Z");
+  }
+  const auto result = run_script(script_file("research_study.json"), dir);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const records::LearnerStore store(dir, records::StoreOptions{.read_only = true});
+  const auto participants = store.study_participants("pilot");
+  ASSERT_EQ(participants.size(), 2u);
+  EXPECT_EQ(participants[1].learner, "P13");
+  const auto sessions = store.study_sessions("pilot");
+  ASSERT_EQ(sessions.size(), 1u);
+  EXPECT_EQ(sessions[0].session.learner, "P13");
+  EXPECT_EQ(sessions[0].session.condition, participants[1].condition);
+  // The page with the study chosen: its enrolment, "not shown", and no list of conditions.
+  EXPECT_TRUE(test::matches_golden(read_png(dir / "research_study.png"), "gui/research_study"));
 }
 
 }  // namespace

@@ -76,7 +76,7 @@ inline std::string parking_trajectory(int steps, int variant) {
 }
 
 inline NewSession sample_session(const std::string& learner = "Ada", const std::string& task = "parking") {
-  return {learner, task, "adaptive", 42u, R"({"pretest_count":5})", "2024-05-01T10:00:00.000Z"};
+  return {learner, task, "adaptive", 42u, R"({"pretest_count":5})", "2024-05-01T10:00:00.000Z", ""};
 }
 
 inline TrialRecord sample_trial(std::int64_t session_id, int index, TrialKind kind = TrialKind::Pretest,

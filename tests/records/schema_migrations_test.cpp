@@ -62,6 +62,22 @@ TEST(SchemaMigrations, RefusesToDowngrade) {
   EXPECT_EQ(db.query_int("PRAGMA user_version"), 2);
 }
 
+TEST(SchemaMigrations, AnInMemoryCopyIsMigratedAndTheFileIsNot) {
+  const auto file = test::fresh_dir("migrate-copy") / "fixture.db";
+  {
+    SqliteDb db(file, SqliteDb::Mode::ReadWriteCreate);
+    migrate(db, std::array{kV1}, file.string());
+    db.exec("INSERT INTO notes(text) VALUES('kept')");
+  }
+  const std::string before = test::file_bytes(file);
+  SqliteDb source(file, SqliteDb::Mode::ReadOnly);
+  const auto copy = migrated_in_memory(source, std::array{kV1, kV2}, file.string());
+  EXPECT_EQ(copy->query_int("PRAGMA user_version"), 2);
+  EXPECT_EQ(copy->query_text("SELECT text || '/' || author FROM notes"), "kept/unknown");
+  EXPECT_EQ(source.query_int("PRAGMA user_version"), 1);
+  EXPECT_EQ(test::file_bytes(file), before);
+}
+
 TEST(SchemaMigrations, ListIsConsecutiveFromOne) {
   int expected = 1;
   for (const auto& migration : schema_migrations()) EXPECT_EQ(migration.version, expected++);

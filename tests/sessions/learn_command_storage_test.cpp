@@ -66,7 +66,7 @@ const std::string kSession = "learn --task writing --pretest 3 --eval 2 --learne
 rlim_t log_bytes_after_session_start() {
   const fs::path dir = test::fresh_scratch_dir("learn_probe");
   records::LearnerStore store(dir);
-  store.begin_session({"limit", "writing", "adaptive", 1, R"({"pretest_count":3,"eval_count":2})", "t"});
+  store.begin_session({"limit", "writing", "adaptive", 1, R"({"pretest_count":3,"eval_count":2})", "t", ""});
   return static_cast<rlim_t>(fs::file_size(dir / "skillcoach.db-wal"));
 }
 

@@ -128,10 +128,12 @@ class LearnDiagnosisScreen final : public Screen {
     ImGui::Dummy(ImVec2(0, 6 * sc));
     const int trials = s.practice_slot_count();
     const int minutes = s.practice_minutes();
-    ImGui::Text("This round: %d practice trial%s, each after a demo; up to about %d minute%s of practice (%s).", trials,
-                trials == 1 ? "" : "s", minutes, minutes == 1 ? "" : "s",
-                std::string(condition_name(s.settings().condition)).c_str());
-    if (s.settings().condition != StudyCondition::Adaptive)  // research mode: the arm's share of the budget
+    // In a study the learner must not learn their condition: neither its name nor its budget is shown.
+    const bool blinded = !s.settings().study.empty();
+    const std::string arm = blinded ? "" : " (" + std::string(condition_name(s.settings().condition)) + ")";
+    ImGui::Text("This round: %d practice trial%s, each after a demo; up to about %d minute%s of practice%s.", trials,
+                trials == 1 ? "" : "s", minutes, minutes == 1 ? "" : "s", arm.c_str());
+    if (!blinded && s.settings().condition != StudyCondition::Adaptive)  // research mode: the arm's share of the budget
       ImGui::TextDisabled("Practice time-steps %d of a budget of %d (reference: %s).", s.curriculum().total_steps(),
                           s.curriculum().budget_steps, budget_reference(s.curriculum_config()).c_str());
     learn_ui::muted_wrapped("You can ask for one more on a skill after any practice trial, or end practice early.");

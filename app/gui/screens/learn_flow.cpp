@@ -51,7 +51,22 @@ void LearnFlow::start(const AppServices& services, bool resume) {
   if (services.task == TaskKind::parking)
     settings.goal_region = research ? research_lot : first_session_goal_region(db.session_count(learner, "parking"));
   const std::string task(to_string(services.task));
+  if (research && !study.empty()) join_study(db, task, settings);
   session_ = std::make_unique<TrainingSession>(kits_.kit(task, settings.lot()), db, settings, clock_of(*this));
+}
+
+// One session per participant: a finished one ends the study for them (an unfinished one resumes above).
+void LearnFlow::join_study(records::LearnerStore& db, const std::string& task, SessionSettings& settings) const {
+  for (const auto& s : db.study_sessions(study))
+    if (s.session.learner == learner)
+      throw InputError(learner, "already has a session in study \"" + study + "\" (session " +
+                                    std::to_string(s.session.id) + "); resume it or ask the coordinator");
+  const auto definition = db.study(study);
+  if (!definition || definition->task != task)
+    throw InputError("study \"" + study + "\"", "is not a " + task + " study in this database");
+  const records::StudyParticipant participant = db.enrol(study, learner, clock_of(*this)());
+  settings.condition = parse_condition(participant.condition);
+  settings.study = study;
 }
 
 LearnFlow::~LearnFlow() {

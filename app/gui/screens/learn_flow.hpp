@@ -25,6 +25,9 @@ class LearnFlow {
   StudyCondition condition = StudyCondition::Adaptive;  // research mode may change it
   // Parking lot in research mode (recorded with the session); learners get first_session_goal_region.
   GoalRegion research_lot = GoalRegion::StudyCorner;
+  // Research mode: the study the learner joins (empty: none). Its randomisation assigns the condition at
+  // enrolment, and no screen shows it (the learner must not know their arm).
+  std::string study;
   // Round size (Ind. Drills, Adaptive), recorded with the session: drills for this many weakest skills ...
   int weak_skills = SessionSettings{}.weak_skills;
   int drills_per_weak_skill = SessionSettings{}.drills_per_weak_skill;  // ... this many unique drills each
@@ -47,6 +50,8 @@ class LearnFlow {
   ~LearnFlow();
 
  private:
+  void join_study(records::LearnerStore& db, const std::string& task, SessionSettings& settings) const;
+
   TaskKitCache kits_;  // built on first use (parking segments its pool once per lot)
   std::unique_ptr<records::LearnerStore> store_;
   std::unique_ptr<TrainingSession> session_;

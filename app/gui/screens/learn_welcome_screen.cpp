@@ -113,14 +113,51 @@ class LearnWelcomeScreen final : public Screen {
     ImGui::TreePop();
   }
 
+  // The studies of this task in the database: joining one enrols the learner, whose condition the study's
+  // randomisation assigns and no screen shows. Without a study the condition is chosen here.
+  void draw_studies(UiContext& ui) {
+    std::vector<records::StudyDefinition> studies;
+    try {
+      studies = flow_.store(services_).list_studies();
+    } catch (const InputError& e) {
+      flow_.message = e.what();
+    }
+    std::erase_if(studies, [&](const auto& s) { return s.task != to_string(services_.task); });
+    if (studies.empty()) {
+      flow_.study.clear();
+      return;
+    }
+    learn_ui::heading(ui, "Research mode: study");
+    if (ImGui::RadioButton("No study (choose the condition)", flow_.study.empty())) flow_.study.clear();
+    for (const auto& study : studies) {
+      const auto enrolled = flow_.store(services_).study_participants(study.name).size();
+      const std::string label =
+          study.name + " (" + std::to_string(enrolled) + " of " + std::to_string(study.capacity()) + " enrolled)";
+      if (ImGui::RadioButton(label.c_str(), flow_.study == study.name)) flow_.study = study.name;
+    }
+  }
+
   void draw_research(UiContext& ui) {
     ImGui::Separator();
+    draw_studies(ui);
+    if (!flow_.study.empty()) {
+      learn_ui::muted_wrapped("The study assigns the condition when the learner starts; it is not shown.");
+    } else {
+      draw_conditions(ui);
+    }
+    draw_lot(ui);
+  }
+
+  void draw_conditions(UiContext& ui) {
     learn_ui::heading(ui, "Research mode: study condition");
     for (StudyCondition c : kAllStudyConditions) {
       const std::string label(condition_name(c));
       if (ImGui::RadioButton(label.c_str(), flow_.condition == c)) flow_.condition = c;
       if (c != StudyCondition::Drills && c != StudyCondition::Adaptive) ImGui::SameLine();
     }
+  }
+
+  void draw_lot(UiContext& ui) {
     if (services_.task != TaskKind::parking) return;
     learn_ui::heading(ui, "Research mode: goal spots");
     if (ImGui::RadioButton("Study corner (spots 12-14, the paper's study)",

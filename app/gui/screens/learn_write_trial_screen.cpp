@@ -31,7 +31,7 @@ namespace {
 
 constexpr double kDemoLingerSeconds = 1.0;  // the finished ghost drill stays this long before practice starts
 
-enum class Stage { demo, writing, result };
+enum class WriteStage { demo, writing, result };
 
 bool single_stroke(const std::vector<writing::TracePoint>& path) {
   return std::all_of(path.begin() + (path.empty() ? 0 : 1), path.end(), [](const auto& p) { return p.pen; });
@@ -47,7 +47,7 @@ class LearnWriteTrialScreen final : public Screen {
     if (!flow_.session()) return;
     prepare(0.0);
     if (services.headless) {  // screenshots: half-way through a practice trace over the drill's ribbon
-      stage_ = Stage::writing;
+      stage_ = WriteStage::writing;
       demo_pending_ = false;
       scripted_ink_ = writing_view::scripted_learner_trace(reference_.points, {services.seed, 3.0, 4, 0.55});
     }
@@ -65,14 +65,14 @@ class LearnWriteTrialScreen final : public Screen {
     const PixelViewport canvas_area{pad, header + pad, static_cast<float>(ui.width) - panel - 2 * pad,
                                     static_cast<float>(ui.height) - header - 2 * pad};
     const Camera2D camera = writing_view::writing_canvas_camera(canvas_area);
-    if (learn_ui::pause_pressed(ui.input) && stage_ != Stage::result) toggle_pause(ui);
-    if (stage_ == Stage::demo && !paused_) advance_demo(ui.time_seconds);
-    if (stage_ == Stage::writing && !paused_) handle_pen(ui, camera);
+    if (learn_ui::pause_pressed(ui.input) && stage_ != WriteStage::result) toggle_pause(ui);
+    if (stage_ == WriteStage::demo && !paused_) advance_demo(ui.time_seconds);
+    if (stage_ == WriteStage::writing && !paused_) handle_pen(ui, camera);
     draw_canvas(ui, camera);
     draw_header(ui);
     draw_panel(ui, panel, header);
     if (paused_) draw_pause(ui);
-    if (stage_ == Stage::result) draw_result(ui);
+    if (stage_ == WriteStage::result) draw_result(ui);
   }
 
  private:
@@ -92,7 +92,7 @@ class LearnWriteTrialScreen final : public Screen {
     pen_ = writing_view::CanvasPenInput({on_release, time_limit_});
     stage_started_ = now;
     paused_ = false;
-    stage_ = demo_pending_ ? Stage::demo : Stage::writing;
+    stage_ = demo_pending_ ? WriteStage::demo : WriteStage::writing;
     score_.reset();
   }
 
@@ -114,7 +114,7 @@ class LearnWriteTrialScreen final : public Screen {
   void draw_pause(UiContext& ui) {
     learn_ui::begin_card(ui, "learn_write_pause", 480.0f, 0.3f);
     learn_ui::title(ui, "Paused");
-    ImGui::TextWrapped(stage_ == Stage::demo ? "The ghost pen waits for you."
+    ImGui::TextWrapped(stage_ == WriteStage::demo ? "The ghost pen waits for you."
                                              : "The clock is stopped and the pen does not write.");
     ImGui::TextUnformatted("Press Esc to continue.");
     learn_ui::end_card();
@@ -128,7 +128,7 @@ class LearnWriteTrialScreen final : public Screen {
   void end_demo(double now) {
     trials_.record_demo(reference_doc_, {started_, records::utc_timestamp_now()});
     demo_pending_ = false;
-    stage_ = Stage::writing;
+    stage_ = WriteStage::writing;
     stage_started_ = now;
   }
 
@@ -160,7 +160,7 @@ class LearnWriteTrialScreen final : public Screen {
     const std::string now_text = records::utc_timestamp_now();
     trials_.submit(writing::writing_trial_json(trial), {started_.empty() ? now_text : started_, now_text});
     started_.clear();
-    stage_ = Stage::result;
+    stage_ = WriteStage::result;
     stage_started_ = now;
   }
 
@@ -171,8 +171,8 @@ class LearnWriteTrialScreen final : public Screen {
     else
       scene.guide = reference_.points;
     scene.learner = services_.headless ? scripted_ink_ : pen_.raw().points;
-    if (stage_ == Stage::demo) scene.ghost_pen = writing_view::ghost_pen_at(reference_.points, stage_seconds(ui));
-    if (stage_ == Stage::result && score_) scene.score = *score_;
+    if (stage_ == WriteStage::demo) scene.ghost_pen = writing_view::ghost_pen_at(reference_.points, stage_seconds(ui));
+    if (stage_ == WriteStage::result && score_) scene.score = *score_;
     scene.caption = reference_.scenario.word;
     ui.renderer.set_camera(camera);
     writing_view::paint_writing_scene(ui.renderer, scene, look_);
@@ -181,12 +181,12 @@ class LearnWriteTrialScreen final : public Screen {
 
   void draw_header(UiContext& ui) {
     learn_ui::begin_header_bar(ui, "learn_write_header",
-                               stage_ == Stage::result
+                               stage_ == WriteStage::result
                                    ? trials_.result_title()
-                                   : learn_phase_title(session(), stage_ == Stage::demo || demo_pending_, false));
-    if (stage_ == Stage::demo)
+                                   : learn_phase_title(session(), stage_ == WriteStage::demo || demo_pending_, false));
+    if (stage_ == WriteStage::demo)
       ImGui::TextUnformatted("Watch the ghost pen: where each stroke starts, its direction, where the pen lifts.");
-    else if (stage_ == Stage::writing)
+    else if (stage_ == WriteStage::writing)
       ImGui::Text("Time limit %.0f s from your first touch", time_limit_);
     learn_ui::end_header_bar();
   }
@@ -198,9 +198,9 @@ class LearnWriteTrialScreen final : public Screen {
     learn_ui::heading(ui, is_drill_ ? "Drill" : "Trace the word");
     if (is_drill_ && !target_.empty()) ImGui::TextWrapped("%s", target_.c_str());
     learn_ui::muted_wrapped(instructions());
-    if (stage_ == Stage::demo) {
+    if (stage_ == WriteStage::demo) {
       if (learn_ui::primary_button(ui, "Skip the demo")) end_demo(ui.time_seconds);
-    } else if (stage_ == Stage::writing) {
+    } else if (stage_ == WriteStage::writing) {
       const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
       ImGui::BeginDisabled(!pen_.started() || paused_);
       if (ImGui::Button("Done (Enter)", ImVec2(half, 0))) pen_.done(ui.input.time_seconds);
@@ -214,7 +214,7 @@ class LearnWriteTrialScreen final : public Screen {
   }
 
   const char* instructions() const {
-    if (stage_ == Stage::demo) return "The ghost pen writes the drill. Then it is your turn, over the blue ribbon.";
+    if (stage_ == WriteStage::demo) return "The ghost pen writes the drill. Then it is your turn, over the blue ribbon.";
     if (is_drill_)
       return single_stroke(reference_.points)
                  ? "Hold the button and trace the blue ribbon in one stroke. Release to finish."
@@ -253,7 +253,7 @@ class LearnWriteTrialScreen final : public Screen {
   std::vector<writing::TracePoint> scripted_ink_;
   std::optional<writing::WritingScore> score_;
   writing::TrialEnd end_reason_ = writing::TrialEnd::NotEnded;
-  Stage stage_ = Stage::writing;
+  WriteStage stage_ = WriteStage::writing;
   double stage_started_ = 0;
   bool paused_ = false;
   double paused_at_ = 0;  // ui.time_seconds when the pause began
