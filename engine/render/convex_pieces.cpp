@@ -8,6 +8,10 @@ namespace {
 
 constexpr float kSameCorner = 1e-6f;
 constexpr float kMaxOffsetInHalfFeathers = 4.0f;  // caps the mitre of very sharp corners
+// Pieces reach this far (in feathers) across their seams. Neighbours computed separately (a round join's arc,
+// a segment's end) meet along slightly different lines; on a single-sample target a pixel whose centre falls
+// in the hairline between them would stay unpainted, a dot in a ribbon.
+constexpr float kSeamOverlap = 1.0f / 64.0f;
 
 float length(Vec2f v) { return std::sqrt(dot(v, v)); }
 
@@ -62,15 +66,18 @@ void offsets_of(std::span<const Vec2f> c, std::span<const std::uint8_t> outline,
   outward_normals(c, normals);
   const float half = half_ramp(c, outline, normals, feather);
   const float max_offset = kMaxOffsetInHalfFeathers * feather * 0.5f;
+  const float overlap = kSeamOverlap * feather;
   const std::size_t n = c.size();
   out.inner.resize(n);
   out.outer.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t prev = (k + n - 1) % n;
-    const float d_prev = outline[prev] ? half : 0, d_next = outline[k] ? half : 0;
-    const Vec2f x = offset_corner(normals[prev], normals[k], d_prev, d_next, max_offset);
-    out.inner[k] = c[k] - x;
-    out.outer[k] = c[k] + x;
+    // Inward distances of the core's edges (outline edges move in, seams move out a little), then outward
+    // distances of the ramp's outer edges.
+    const float in_prev = outline[prev] ? half : -overlap, in_next = outline[k] ? half : -overlap;
+    const float out_prev = outline[prev] ? half : overlap, out_next = outline[k] ? half : overlap;
+    out.inner[k] = c[k] - offset_corner(normals[prev], normals[k], in_prev, in_next, max_offset);
+    out.outer[k] = c[k] + offset_corner(normals[prev], normals[k], out_prev, out_next, max_offset);
   }
 }
 

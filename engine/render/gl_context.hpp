@@ -63,8 +63,8 @@ OffscreenBackend offscreen_backend_from_env();
 std::string_view to_string(OffscreenBackend backend);
 
 // Creates and makes current an offscreen GL 3.3 core context with a width x height RGBA8 target
-// (preferred_samples() samples, 8-bit stencil). Throws InputError with one line saying what is missing (e.g. libOSMesa.so.8
-// not installed, no EGL device) when no context can be made.
+// (preferred_samples() samples, 8-bit stencil). Throws InputError with one line saying what is missing
+// (e.g. libOSMesa.so.8 not installed, no EGL device) when no context can be made.
 std::unique_ptr<GlContext> create_offscreen_context(OffscreenBackend backend, int width, int height);
 
 // For the app's headless paths: SKILLCOACH_GL if set (that backend only); otherwise OSMesa, then EGL.

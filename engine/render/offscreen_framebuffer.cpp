@@ -25,8 +25,7 @@ OffscreenFramebuffer::OffscreenFramebuffer(const GlFunctions& gl, int width, int
     gl_.GenRenderbuffers(1, &depth_stencil_resolved_);
     gl_.BindRenderbuffer(GL_RENDERBUFFER, depth_stencil_resolved_);
     gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                depth_stencil_resolved_);
+    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_stencil_resolved_);
   }
   if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw InputError("offscreen framebuffer", "resolve framebuffer is incomplete");
