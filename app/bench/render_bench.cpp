@@ -1,14 +1,20 @@
 // Rendering at the trainer's default window size (1280x720), offscreen on the machine's GL (llvmpipe on a
 // headless box: the CPU rasterises, so this is the worst case a learner's laptop would see). Each frame
 // ends with glFinish so the time includes the rasterisation, not just the command submission.
-//  * render/screen_frame_1280x720: one whole app frame (scene + ImGui + 4x MSAA resolve) of the most
-//    representative screen this build has (label: which one);
+//  * render/frame_1280x720/<screen>: one whole app frame (scene + ImGui + present) of a screen as the
+//    screenshot command shows it (label: the screen and the GL backend):
+//      free_drive    the free-drive screen, its simulation advancing one step per frame;
+//      learn_trial   a parking practice trial being driven, the expert's ghost path over the lot;
+//      review_trial  the instructor's trial viewer (trail, ghost ribbon, skill markers, charts).
+//    The trial and review screens are timed with the clock held (no simulation step), so every iteration
+//    draws the same frame however many iterations the library runs;
 //  * render/renderer2d_lot_scene_1280x720: Renderer2D alone on a parking-lot-like scene (30 spot
 //    outlines, 14 parked cars, a 300-point trail, a translucent 100-point ghost ribbon, goal arrow).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "app/gui/app_services.hpp"
@@ -33,15 +39,12 @@ std::unique_ptr<sc::GlContext> offscreen_context(benchmark::State& state) {
   }
 }
 
-void BM_ScreenFrame(benchmark::State& state) {
+void BM_ScreenFrame(benchmark::State& state, const char* screen, bool advance_clock) {
   auto context = offscreen_context(state);
   if (!context) return;
-  std::string screen = "start";
-  for (const char* candidate : {"free_drive", "start"}) {
-    if (sc::Navigator::is_available(candidate)) {
-      screen = candidate;
-      break;
-    }
+  if (!sc::Navigator::is_available(screen)) {
+    state.SkipWithError((std::string("screen ") + screen + " is not in this build").c_str());
+    return;
   }
   sc::AppServices services;
   services.headless = true;
@@ -52,15 +55,27 @@ void BM_ScreenFrame(benchmark::State& state) {
     host.frame(input, sc::ScreenHost::kSimulationStep);
     context->present();
   }
+  const double elapsed = advance_clock ? sc::ScreenHost::kSimulationStep : 0.0;
   for (auto _ : state) {
     host.imgui().make_current();
-    host.frame(input, sc::ScreenHost::kSimulationStep);
+    host.frame(input, elapsed);
     context->present();
     context->gl().Finish();
   }
-  state.SetLabel(screen + " screen, " + std::string(context->backend_name()));
+  state.SetLabel(std::string(screen) + " screen, " + std::string(context->backend_name()));
 }
-BENCHMARK(BM_ScreenFrame)->Name("render/screen_frame_1280x720")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ScreenFrame, free_drive, "free_drive", true)
+    ->Name("render/frame_1280x720/free_drive")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ScreenFrame, learn_trial, "learn_trial", false)
+    ->Name("render/frame_1280x720/learn_trial")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ScreenFrame, review_trial, "review_trial", false)
+    ->Name("render/frame_1280x720/review_trial")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // A lot seen from above, world units = metres, like the parking view.
 void draw_lot_scene(sc::Renderer2D& r, const std::vector<sc::Vec2f>& trail, const std::vector<sc::Vec2f>& ghost) {

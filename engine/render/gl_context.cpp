@@ -1,6 +1,7 @@
 #include "engine/render/gl_context.hpp"
 
 #include <cstdlib>
+#include <string_view>
 
 #include "engine/core/error.hpp"
 #include "engine/render/offscreen_contexts.hpp"
@@ -24,6 +25,16 @@ void GlContext::load_functions(GlProcLoader loader, const std::string& context_n
     throw InputError(context_name, "OpenGL " + std::to_string(major) + "." + std::to_string(minor) +
                                        " context, but 3.3 core is required");
 }
+
+bool is_software_renderer(const GlFunctions& gl) {
+  const auto* value = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+  const std::string_view renderer = value != nullptr ? value : "";
+  for (std::string_view cpu : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
+    if (renderer.find(cpu) != std::string_view::npos) return true;
+  return false;
+}
+
+int preferred_samples(const GlFunctions& gl) { return is_software_renderer(gl) ? 1 : 4; }
 
 OffscreenBackend offscreen_backend_from_env() {
   const char* value = std::getenv("SKILLCOACH_GL");

@@ -49,6 +49,13 @@ class GlContext {
   GlFunctions gl_;
 };
 
+// Whether the current context rasterises on the CPU (Mesa's llvmpipe, softpipe or swrast: a school PC or a VM
+// without GPU drivers). There 4x MSAA costs every sample of every pixel, clears and resolve included, so
+// offscreen targets and windows use one sample and rely on the renderer's feathered edges.
+bool is_software_renderer(const GlFunctions& gl);
+// The MSAA samples SkillCoach asks of a context: 1 on a software renderer, else 4.
+int preferred_samples(const GlFunctions& gl);
+
 enum class OffscreenBackend { osmesa, egl };
 
 // SKILLCOACH_GL=osmesa|egl (default osmesa); throws InputError naming the variable for any other value.
@@ -56,8 +63,8 @@ OffscreenBackend offscreen_backend_from_env();
 std::string_view to_string(OffscreenBackend backend);
 
 // Creates and makes current an offscreen GL 3.3 core context with a width x height RGBA8 target
-// (4x multisampled, 8-bit stencil). Throws InputError with one line saying what is missing (e.g. libOSMesa.so.8
-// not installed, no EGL device) when no context can be made.
+// (preferred_samples() samples, 8-bit stencil). Throws InputError with one line saying what is missing
+// (e.g. libOSMesa.so.8 not installed, no EGL device) when no context can be made.
 std::unique_ptr<GlContext> create_offscreen_context(OffscreenBackend backend, int width, int height);
 
 // For the app's headless paths: SKILLCOACH_GL if set (that backend only); otherwise OSMesa, then EGL.

@@ -16,12 +16,12 @@ void OffscreenGlContext::resize(int width, int height) {
   if (width == this->width() && height == this->height()) return;
   make_current();
   framebuffer_.reset();
-  framebuffer_.emplace(gl(), width, height);
+  framebuffer_.emplace(gl(), width, height, preferred_samples(gl()));
 }
 
 void OffscreenGlContext::attach_framebuffer(int width, int height) {
   set_current_gl_functions(&gl());
-  framebuffer_.emplace(gl(), width, height);
+  framebuffer_.emplace(gl(), width, height, preferred_samples(gl()));
 }
 
 void OffscreenGlContext::release_framebuffer() {

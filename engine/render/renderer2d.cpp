@@ -101,21 +101,29 @@ float Renderer2D::to_world(Stroke stroke) const {
 
 float Renderer2D::chord_error_world() const { return 0.25f / camera_.pixels_per_unit(); }
 
-void Renderer2D::push(const Triangles& world_triangles, Color color, int stencil_ref) {
+Renderer2D::ThinStroke Renderer2D::thin_stroke(Stroke stroke, Color color) const {
+  const float width = to_world(stroke), pixel = 1.0f / camera_.pixels_per_unit();
+  if (!(width < pixel)) return {width, color};
+  return {pixel, color.with_alpha(color.a * std::max(0.0f, width / pixel))};
+}
+
+void Renderer2D::push(const ConvexPieces& pieces, Color color, int stencil_ref) {
   if (!in_frame_) throw InputError("Renderer2D", "drawing outside begin_frame()/end_frame()");
-  if (world_triangles.empty()) return;
-  const std::uint32_t abgr = color.packed_abgr();
+  if (pieces.empty()) return;
+  feathered_.clear();
+  append_feathered(feathered_, pieces, 1.0f / camera_.pixels_per_unit());
+  const std::uint32_t inside = color.packed_abgr(), outside = color.with_alpha(0).packed_abgr();
   const std::size_t first = vertices_.size();
-  for (const Vec2f& p : world_triangles) {
-    const Vec2f px = camera_.world_to_pixel(p);
-    vertices_.push_back({px.x, px.y, abgr});
+  for (const FeatheredVertex& v : feathered_) {
+    const Vec2f px = camera_.world_to_pixel(v.position);
+    vertices_.push_back({px.x, px.y, v.coverage > 0.5f ? inside : outside});
   }
   const PixelViewport& clip = camera_.viewport();
   if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 &&
       same_clip(batches_.back().clip, clip)) {
-    batches_.back().count += world_triangles.size();
+    batches_.back().count += feathered_.size();
   } else {
-    batches_.push_back({first, world_triangles.size(), clip, stencil_ref});
+    batches_.push_back({first, feathered_.size(), clip, stencil_ref});
   }
 }
 
@@ -129,8 +137,9 @@ void Renderer2D::outline_rect(const RotatedRect& rect, Stroke stroke, Color colo
   scratch_.clear();
   PathStyle style;
   style.closed = true;
-  append_polyline(scratch_, rect_corners(rect), to_world(stroke), style, chord_error_world());
-  push(scratch_, color);
+  const ThinStroke thin = thin_stroke(stroke, color);
+  append_polyline(scratch_, rect_corners(rect), thin.width, style, chord_error_world());
+  push(scratch_, thin.color);
 }
 
 void Renderer2D::fill_polygon(std::span<const Vec2f> convex_corners, Color color) {
@@ -141,8 +150,9 @@ void Renderer2D::fill_polygon(std::span<const Vec2f> convex_corners, Color color
 
 void Renderer2D::polyline(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style) {
   scratch_.clear();
-  append_polyline(scratch_, points, to_world(stroke), style, chord_error_world());
-  push(scratch_, color);
+  const ThinStroke thin = thin_stroke(stroke, color);
+  append_polyline(scratch_, points, thin.width, style, chord_error_world());
+  push(scratch_, thin.color);
 }
 
 void Renderer2D::dashed_polyline(std::span<const Vec2f> points, Stroke stroke, DashPattern pattern, Color color,
@@ -151,9 +161,10 @@ void Renderer2D::dashed_polyline(std::span<const Vec2f> points, Stroke stroke, D
   PathStyle dash_style = style;
   dash_style.closed = false;
   scratch_.clear();
+  const ThinStroke thin = thin_stroke(stroke, color);
   for (const auto& dash : dash_polyline(points, pattern.dash * scale, pattern.gap * scale))
-    append_polyline(scratch_, dash, to_world(stroke), dash_style, chord_error_world());
-  push(scratch_, color);
+    append_polyline(scratch_, dash, thin.width, dash_style, chord_error_world());
+  push(scratch_, thin.color);
 }
 
 void Renderer2D::fill_circle(Vec2f center, float radius, Color color) {
@@ -164,15 +175,17 @@ void Renderer2D::fill_circle(Vec2f center, float radius, Color color) {
 
 void Renderer2D::outline_circle(Vec2f center, float radius, Stroke stroke, Color color) {
   scratch_.clear();
-  append_ring(scratch_, center, radius, to_world(stroke), chord_error_world());
-  push(scratch_, color);
+  const ThinStroke thin = thin_stroke(stroke, color);
+  append_ring(scratch_, center, radius, thin.width, chord_error_world());
+  push(scratch_, thin.color);
 }
 
 void Renderer2D::ghost_ribbon(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style) {
   scratch_.clear();
-  append_polyline(scratch_, points, to_world(stroke), style, chord_error_world());
+  const ThinStroke thin = thin_stroke(stroke, color);
+  append_polyline(scratch_, points, thin.width, style, chord_error_world());
   if (scratch_.empty()) return;
-  push(scratch_, color, next_ghost_ref_);
+  push(scratch_, thin.color, next_ghost_ref_);
   next_ghost_ref_ = next_ghost_ref_ % kMaxGhostsPerStencilClear + 1;
 }
 

@@ -3,6 +3,8 @@
 // camera and appended to one vertex batch, drawn in order (painter's algorithm) with as few draw calls as the
 // state allows: one per run of opaque/translucent primitives sharing a clip rectangle, plus one per ghost
 // ribbon (each ghost uses its own stencil value so overlapping parts of one ribbon are blended only once).
+// Edges are anti-aliased in the geometry (a one-pixel feathered ramp, engine/render/convex_pieces.hpp), so a
+// single-sample framebuffer looks smooth and a multisampled one needs no more than it has.
 //
 //   Renderer2D renderer(context);             // loads shaders/scene.{vert,frag}
 //   renderer.begin_frame(Color::hex(0x20242c));
@@ -83,9 +85,18 @@ class Renderer2D {
     int stencil_ref = 0;  // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
   };
 
+  // A stroke narrower than a pixel is drawn one pixel wide with its colour's alpha scaled by its width: the
+  // feathered edge needs a pixel to ramp across, and the line keeps the same weight.
+  struct ThinStroke {
+    float width;  // world units
+    Color color;
+  };
+
   float to_world(Stroke stroke) const;
+  ThinStroke thin_stroke(Stroke stroke, Color color) const;
   float chord_error_world() const;  // a quarter pixel in world units
-  void push(const Triangles& world_triangles, Color color, int stencil_ref = 0);
+  // Feathers the pieces (a one-pixel anti-aliasing ramp on their outline) and batches them.
+  void push(const ConvexPieces& pieces, Color color, int stencil_ref = 0);
   void flush();
 
   GlContext& context_;
@@ -98,7 +109,8 @@ class Renderer2D {
   Camera2D camera_;
   std::vector<Vertex> vertices_;
   std::vector<Batch> batches_;
-  Triangles scratch_;
+  ConvexPieces scratch_;
+  FeatheredTriangles feathered_;
   int next_ghost_ref_ = 1;
   bool in_frame_ = false;
   RenderStats stats_;

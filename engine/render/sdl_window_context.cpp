@@ -26,22 +26,28 @@ void request_attributes(int samples) {
 
 SdlWindowContext::SdlWindowContext(const std::string& title, int width_points, int height_points) {
   const Uint32 flags = SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI;
-  // Multisampling is not offered by every driver; a window without it is still better than none.
+  // Multisampling is not offered by every driver; a window without it is still better than none. On a software
+  // renderer the window is opened again without it: there MSAA multiplies the rasteriser's work, and the
+  // renderer's feathered edges are smooth without it.
   for (int samples : {4, 0}) {
     request_attributes(samples);
     window_ = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width_points,
                                height_points, flags);
     if (window_ == nullptr) continue;
     context_ = SDL_GL_CreateContext(window_);
-    if (context_ != nullptr) break;
+    if (context_ != nullptr) {
+      SDL_GL_MakeCurrent(window_, context_);
+      load_functions(&sdl_proc, "SDL window");
+      if (samples == 0 || preferred_samples(gl()) > 1) break;
+      SDL_GL_DeleteContext(context_);
+      context_ = nullptr;
+    }
     SDL_DestroyWindow(window_);
     window_ = nullptr;
   }
   if (window_ == nullptr || context_ == nullptr)
     throw InputError("SDL window", std::string("cannot open an OpenGL 3.3 core window: ") + SDL_GetError());
-  SDL_GL_MakeCurrent(window_, context_);
   SDL_GL_SetSwapInterval(1);  // vsync: render at display rate
-  load_functions(&sdl_proc, "SDL window");
   set_current_gl_functions(&gl());
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 
 namespace sc {
@@ -14,28 +15,21 @@ Vec2f normalized(Vec2f v) {
 }
 Vec2f left_normal(Vec2f dir) { return {-dir.y, dir.x}; }
 
-void triangle(Triangles& out, Vec2f a, Vec2f b, Vec2f c) {
-  out.push_back(a);
-  out.push_back(b);
-  out.push_back(c);
+void piece(ConvexPieces& out, std::initializer_list<Vec2f> corners, std::initializer_list<bool> outline) {
+  auto flag = outline.begin();
+  for (const Vec2f& c : corners) out.add_corner(c, *flag++);
+  out.end_piece();
 }
 
-void quad(Triangles& out, Vec2f a, Vec2f b, Vec2f c, Vec2f d) {  // a-b-c-d around the quad
-  triangle(out, a, b, c);
-  triangle(out, a, c, d);
-}
-
-// Fan of triangles around `center` sweeping from direction `from` by `sweep` radians.
-void append_arc_fan(Triangles& out, Vec2f center, float radius, Vec2f from, float sweep, float max_chord_error) {
+// Adds the corners of an arc around `center` from direction `from` by `sweep` radians (both ends included) to
+// the open piece, the edges between them outline.
+void add_arc_corners(ConvexPieces& out, Vec2f center, float radius, Vec2f from, float sweep, float max_chord_error) {
   const int full = circle_segments(radius, max_chord_error);
   const int steps = std::max(1, static_cast<int>(std::ceil(std::fabs(sweep) / (2 * std::numbers::pi_v<float>)*full)));
   const float start = std::atan2(from.y, from.x);
-  Vec2f previous = center + Vec2f{std::cos(start), std::sin(start)} * radius;
-  for (int i = 1; i <= steps; ++i) {
+  for (int i = 0; i <= steps; ++i) {
     const float angle = start + sweep * static_cast<float>(i) / static_cast<float>(steps);
-    const Vec2f next = center + Vec2f{std::cos(angle), std::sin(angle)} * radius;
-    triangle(out, center, previous, next);
-    previous = next;
+    out.add_corner(center + Vec2f{std::cos(angle), std::sin(angle)} * radius, i < steps);
   }
 }
 
@@ -49,7 +43,8 @@ std::vector<Vec2f> distinct_points(std::span<const Vec2f> points, bool closed) {
   return result;
 }
 
-void append_join(Triangles& out, Vec2f pivot, Vec2f dir_in, Vec2f dir_out, float half, const PathStyle& style,
+// The wedge filling the outer side of a bend; its sides along the segments' ends are seams.
+void append_join(ConvexPieces& out, Vec2f pivot, Vec2f dir_in, Vec2f dir_out, float half, const PathStyle& style,
                  float max_chord_error) {
   const float turn = cross(dir_in, dir_out);
   if (std::fabs(turn) < 1e-6f && dot(dir_in, dir_out) > 0) return;  // straight on: the quads already meet
@@ -58,27 +53,29 @@ void append_join(Triangles& out, Vec2f pivot, Vec2f dir_in, Vec2f dir_out, float
   const Vec2f a = pivot + n_in * half, b = pivot + n_out * half;
   if (style.join == LineJoin::round) {
     const float sweep = std::atan2(cross(n_in, n_out), dot(n_in, n_out));
-    append_arc_fan(out, pivot, half, n_in, sweep, max_chord_error);
+    out.add_corner(pivot, false);
+    add_arc_corners(out, pivot, half, n_in, sweep, max_chord_error);
+    out.end_piece();  // the last arc corner's edge back to the pivot is a seam
     return;
   }
   const Vec2f miter_dir = normalized(n_in + n_out);
   const float cos_half = dot(miter_dir, n_in);
   if (cos_half > 1e-4f && 1.0f / cos_half <= style.miter_limit) {
-    const Vec2f m = pivot + miter_dir * (half / cos_half);
-    triangle(out, pivot, a, m);
-    triangle(out, pivot, m, b);
+    piece(out, {pivot, a, pivot + miter_dir * (half / cos_half), b}, {false, true, true, false});
   } else {
-    triangle(out, pivot, a, b);  // bevel
+    piece(out, {pivot, a, b}, {false, true, false});  // bevel
   }
 }
 
-void append_cap(Triangles& out, Vec2f end, Vec2f outward, float half, LineCap cap, float max_chord_error) {
+// A cap beyond `end`; its side along the segment's end is a seam.
+void append_cap(ConvexPieces& out, Vec2f end, Vec2f outward, float half, LineCap cap, float max_chord_error) {
   const Vec2f n = left_normal(outward) * half;
   if (cap == LineCap::square) {
     const Vec2f ext = outward * half;
-    quad(out, end + n, end + n + ext, end - n + ext, end - n);
+    piece(out, {end + n, end + n + ext, end - n + ext, end - n}, {true, true, true, false});
   } else if (cap == LineCap::round) {
-    append_arc_fan(out, end, half, n, -std::numbers::pi_v<float>, max_chord_error);
+    add_arc_corners(out, end, half, n, -std::numbers::pi_v<float>, max_chord_error);
+    out.end_piece();  // the last arc corner's edge back to the first is the seam
   }
 }
 
@@ -91,7 +88,7 @@ int circle_segments(float radius, float max_chord_error) {
   return std::clamp(static_cast<int>(std::ceil(2 * std::numbers::pi_v<float> / step)), 12, 256);
 }
 
-void append_polyline(Triangles& out, std::span<const Vec2f> points, float width, const PathStyle& style,
+void append_polyline(ConvexPieces& out, std::span<const Vec2f> points, float width, const PathStyle& style,
                      float max_chord_error) {
   if (!(width > 0)) return;
   const float half = width * 0.5f;
@@ -103,10 +100,11 @@ void append_polyline(Triangles& out, std::span<const Vec2f> points, float width,
   if (pts.size() < 2) return;
   const bool closed = style.closed && pts.size() > 2;
   const std::size_t segments = closed ? pts.size() : pts.size() - 1;
+  const bool butt = !closed && style.cap == LineCap::butt;  // the ends are outline, not seams with a cap
   for (std::size_t i = 0; i < segments; ++i) {
     const Vec2f p = pts[i], q = pts[(i + 1) % pts.size()];
     const Vec2f n = left_normal(normalized(q - p)) * half;
-    quad(out, p + n, q + n, q - n, p - n);
+    piece(out, {p + n, q + n, q - n, p - n}, {true, butt && i + 1 == segments, true, butt && i == 0});
   }
   for (std::size_t i = closed ? 0 : 1; i < (closed ? pts.size() : pts.size() - 1); ++i) {
     const Vec2f prev = pts[(i + pts.size() - 1) % pts.size()], here = pts[i], next = pts[(i + 1) % pts.size()];
@@ -154,16 +152,22 @@ std::vector<std::vector<Vec2f>> dash_polyline(std::span<const Vec2f> points, flo
   return dashes;
 }
 
-void append_convex_polygon(Triangles& out, std::span<const Vec2f> corners) {
-  for (std::size_t i = 1; i + 1 < corners.size(); ++i) triangle(out, corners[0], corners[i], corners[i + 1]);
+void append_convex_polygon(ConvexPieces& out, std::span<const Vec2f> corners) {
+  for (const Vec2f& c : corners) out.add_corner(c, true);
+  out.end_piece();
 }
 
-void append_circle(Triangles& out, Vec2f center, float radius, float max_chord_error) {
+void append_circle(ConvexPieces& out, Vec2f center, float radius, float max_chord_error) {
   if (!(radius > 0)) return;
-  append_arc_fan(out, center, radius, {1, 0}, 2 * std::numbers::pi_v<float>, max_chord_error);
+  const int n = circle_segments(radius, max_chord_error);
+  for (int i = 0; i < n; ++i) {
+    const float a = 2 * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
+    out.add_corner(center + Vec2f{std::cos(a), std::sin(a)} * radius, true);
+  }
+  out.end_piece();
 }
 
-void append_ring(Triangles& out, Vec2f center, float radius, float width, float max_chord_error) {
+void append_ring(ConvexPieces& out, Vec2f center, float radius, float width, float max_chord_error) {
   if (!(radius > 0) || !(width > 0)) return;
   const float outer = radius + width * 0.5f, inner = std::max(0.0f, radius - width * 0.5f);
   const int n = circle_segments(outer, max_chord_error);
@@ -171,7 +175,8 @@ void append_ring(Triangles& out, Vec2f center, float radius, float width, float 
     const float a0 = 2 * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(n);
     const float a1 = 2 * std::numbers::pi_v<float> * static_cast<float>(i + 1) / static_cast<float>(n);
     const Vec2f d0{std::cos(a0), std::sin(a0)}, d1{std::cos(a1), std::sin(a1)};
-    quad(out, center + d0 * inner, center + d0 * outer, center + d1 * outer, center + d1 * inner);
+    piece(out, {center + d0 * inner, center + d0 * outer, center + d1 * outer, center + d1 * inner},
+          {false, true, false, true});
   }
 }
 
@@ -181,18 +186,18 @@ std::vector<Vec2f> rect_corners(const RotatedRect& rect) {
   return {rect.center - ex - ey, rect.center + ex - ey, rect.center + ex + ey, rect.center - ex + ey};
 }
 
-void append_arrow(Triangles& out, Vec2f from, Vec2f to, float width, float head_length, float head_width) {
+void append_arrow(ConvexPieces& out, Vec2f from, Vec2f to, float width, float head_length, float head_width) {
   const float total = length(to - from);
   if (!(total > 0)) return;
   const Vec2f dir = normalized(to - from);
   const float head = std::min(head_length, total);
   const Vec2f base = to - dir * head;
-  if (total - head > 0) {
-    const Vec2f shaft[] = {from, base};
-    append_polyline(out, shaft, width, PathStyle{}, width);
+  if (total - head > 0 && width > 0) {  // the shaft's end under the head is a seam with it
+    const Vec2f n = left_normal(dir) * (width * 0.5f);
+    piece(out, {from + n, base + n, base - n, from - n}, {true, false, true, true});
   }
   const Vec2f side = left_normal(dir) * (head_width * 0.5f);
-  triangle(out, to, base + side, base - side);
+  piece(out, {to, base + side, base - side}, {true, true, true});
 }
 
 }  // namespace sc
