@@ -125,15 +125,8 @@ TEST(RecordStudies, AVersion1DatabaseIsReadWithoutChangingIt) {
 
 TEST(RecordStudies, AVersion1DatabaseIsUpgradedWithItsData) {
   const auto dir = test::fresh_dir("study-upgrade");
-  {
-    SqliteDb db(dir / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate);
-    migrate(db, schema_migrations().first(1), "v1");
-    db.exec(
-        "INSERT INTO learners(name, created) VALUES('Ada', '2024-05-01T10:00:00.000Z');"
-        "INSERT INTO sessions(learner_id, task, condition, seed, started) VALUES(1, 'parking', 'skills', 3,"
-        " '2024-05-01T10:00:00.000Z')");
-    ASSERT_EQ(db.query_int("PRAGMA user_version"), 1);
-  }
+  make_version1_database(dir);
+  ASSERT_EQ(SqliteDb(dir / "skillcoach.db", SqliteDb::Mode::ReadWriteCreate).query_int("PRAGMA user_version"), 1);
   LearnerStore store(dir);
   EXPECT_EQ(store.schema_version(), 2);
   const auto learners = store.list_learners();
