@@ -119,7 +119,8 @@ Json to_json(const CompileConfig& c) {
               {"restarts", c.restarts},
               {"resample_step", c.resample_step},
               {"warm_start_iterations", c.warm_start_iterations},
-              {"warm_start_learning_rate", c.warm_start_learning_rate}};
+              {"warm_start_learning_rate", c.warm_start_learning_rate},
+              {"straight_through_latents", c.straight_through_latents}};
 }
 
 CompileConfig compile_config_from_json(const JsonView& v) {
@@ -153,6 +154,8 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   // Absent in models written before the warm start existed (they trained without one).
   if (const auto warm = v.find("warm_start_iterations")) c.warm_start_iterations = static_cast<int>(warm->integer());
   if (const auto rate = v.find("warm_start_learning_rate")) c.warm_start_learning_rate = rate->number();
+  // Absent in models trained on relaxed latents only.
+  if (const auto hard = v.find("straight_through_latents")) c.straight_through_latents = hard->boolean();
   return c;
 }
 

@@ -54,6 +54,11 @@ struct CompileConfig {
   // (docs/skills.md). Data that do not repeat exactly (parking) yield no boundaries: keep it 0 there.
   int warm_start_iterations = 0;
   double warm_start_learning_rate = 0.0;  // Adam's rate during the warm start (0 = learning_rate)
+  // Training feeds the decoder the one-hot skill of each relaxed latent sample (straight-through Gumbel:
+  // the gradient is the relaxed sample's). Why: segmenting reads the argmax skill, but a decoder trained on
+  // soft mixtures can tell two letters apart by mixtures that share their largest weight, so two letters
+  // end up one skill at read-out. With hard codes in training, merging two letters costs reconstruction.
+  bool straight_through_latents = false;
 
   // Paper: latent 16, K 4, Poisson 10, beta_s 1, statediff+action, lr 1e-3, batch 100 (12-D states).
   static CompileConfig parking_defaults();

@@ -96,7 +96,7 @@ Encoded encode(const CompileNetwork& net, const Batch& batch, bool relaxed, at::
     const Tensor readout = torch::einsum("tbh,bt->bh", {e_pad.narrow(0, 0, t_max), b.narrow(1, 1, t_max)});
     const Tensor z_logits = net.head_z(readout);
     out.latent_logits.push_back(z_logits);
-    out.latents.push_back(relaxed ? torch::softmax(z_logits + gumbel_like(z_logits, gen), -1)
+    out.latents.push_back(relaxed ? relaxed_latent(z_logits, gen, cfg.straight_through_latents)
                                   : one_hot_argmax(z_logits));
 
     const Tensor hard = b.argmax(-1).contiguous();
@@ -230,6 +230,12 @@ Tensor log_length_prior(const Batch& batch, const Encoded& enc, double rate, int
 }
 
 }  // namespace
+
+Tensor relaxed_latent(const Tensor& logits, at::Generator* gen, bool straight_through) {
+  const Tensor soft = torch::softmax(logits + gumbel_like(logits, gen), -1);
+  if (!straight_through) return soft;
+  return one_hot_argmax(soft.detach()) + soft - soft.detach();
+}
 
 LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool relaxed, at::Generator* gen) {
   const auto& cfg = net.config;

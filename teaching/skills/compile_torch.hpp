@@ -122,6 +122,10 @@ struct HardReadout {
   std::vector<std::vector<int>> skills;      // [B][K]
 };
 
+// A Gumbel-softmax sample (temperature 1) of a categorical latent with logits [B, M]; with `straight_through`
+// its one-hot argmax in the forward pass and the relaxed sample's gradient in the backward pass
+// (CompileConfig::straight_through_latents).
+torch::Tensor relaxed_latent(const torch::Tensor& logits, at::Generator* generator, bool straight_through);
 // Training (relaxed Gumbel-softmax samples drawn from `generator`) or evaluation (hard argmax, generator
 // unused) losses of one batch.
 LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool relaxed, at::Generator* generator);

@@ -33,6 +33,7 @@ TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
   c.resample_step = 2.5;
   c.warm_start_iterations = 30;
   c.warm_start_learning_rate = 2e-3;
+  c.straight_through_latents = true;
   const Json j = to_json(c);
   const CompileConfig back = compile_config_from_json(JsonView(j, "m.json"));
   EXPECT_EQ(to_json(back), j);
@@ -59,6 +60,14 @@ TEST(CompileConfig, ModelsFromBeforeTheWarmStartReadAsTrainedWithoutOne) {
   const CompileConfig back = compile_config_from_json(JsonView(j, "old.json"));
   EXPECT_EQ(back.warm_start_iterations, 0);
   EXPECT_EQ(back.warm_start_learning_rate, 0.0);
+}
+
+TEST(CompileConfig, ModelsFromBeforeStraightThroughLatentsReadAsRelaxed) {
+  CompileConfig c = CompileConfig::writing_defaults();
+  c.straight_through_latents = true;
+  Json j = to_json(c);
+  j.erase("straight_through_latents");
+  EXPECT_FALSE(compile_config_from_json(JsonView(j, "old.json")).straight_through_latents);
 }
 
 }  // namespace
