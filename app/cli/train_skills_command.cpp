@@ -34,6 +34,7 @@ struct TrainArgs {
   bool fix_boundaries = false;               // diagnostic: boundaries fixed at the true symbol edges
   int augment = 0;                           // realistic copies per demonstration (0 = the expert's only)
   std::string augment_drawers = "training";  // writing: "training" (paper's + drawers 1-10) or "paper"
+  bool augment_mouse = false;                // writing: copies are also mouse-sampled
 };
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
@@ -79,7 +80,7 @@ SkillDataSet generate_augmented_demos(const TrainArgs& args) {
   if (args.task == TaskKind::parking) return generate_augmented_parking_demos(args.demos, args.augment, args.seed);
   const AugmentDrawers drawers =
       args.augment_drawers == "paper" ? AugmentDrawers::PaperOnly : AugmentDrawers::PaperAndTraining;
-  return generate_augmented_writing_demos(args.demos, args.augment, args.seed, drawers);
+  return generate_augmented_writing_demos(args.demos, args.augment, args.seed, {drawers, args.augment_mouse});
 }
 
 int run(const TrainArgs& args) {
@@ -89,6 +90,8 @@ int run(const TrainArgs& args) {
   config = with_overrides(config, args.overrides);
   std::fprintf(stderr, "%s: %s demonstrations...\n", std::string(to_string(args.task)).c_str(),
                args.data.empty() ? "generating" : "reading");
+  if (args.augment_mouse && (args.task != TaskKind::writing || args.augment == 0))
+    throw InputError("--augment-mouse", "only for writing with --augment");
   if (args.augment > 0 && !args.data.empty())
     throw InputError("--augment", "only for generated demonstrations (without --data)");
   const SkillDataSet data = args.augment > 0    ? generate_augmented_demos(args)
@@ -160,6 +163,9 @@ CommandRunner setup_train_skills(CLI::App& sub) {
                  "drawers 1-10) or \"paper\" (the paper's drawer only, so letters repeat exactly)")
       ->check(CLI::IsMember({"training", "paper"}))
       ->capture_default_str();
+  sub.add_flag("--augment-mouse", args->augment_mouse,
+               "Writing with --augment: the copies are also read as a mouse reports them (speed, screen grid, "
+               "hesitations); their inherited boundaries move with the readings");
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

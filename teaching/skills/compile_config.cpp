@@ -86,7 +86,8 @@ void CompileConfig::validate(const std::string& where) const {
   need(num_segments >= 1 && num_segments <= 64, "num_segments must be in 1..64");
   need(hidden >= 2 && hidden <= 1024 && hidden % 2 == 0, "hidden must be an even number in 2..1024");
   need(prior_rate > 0.0, "prior_rate must be positive");
-  need(beta_b >= 0.0 && beta_z >= 0.0 && beta_s >= 0.0, "beta_b, beta_z and beta_s must be >= 0");
+  need(beta_b >= 0.0 && beta_z >= 0.0 && beta_s >= 0.0 && beta_usage >= 0.0,
+       "beta_b, beta_z, beta_s and beta_usage must be >= 0");
   need(learning_rate > 0.0 && learning_rate < 1.0, "learning_rate must be in (0, 1)");
   need(batch_size >= 1, "batch_size must be >= 1");
   need(iterations >= 0, "iterations must be >= 0");
@@ -120,7 +121,8 @@ Json to_json(const CompileConfig& c) {
               {"resample_step", c.resample_step},
               {"warm_start_iterations", c.warm_start_iterations},
               {"warm_start_learning_rate", c.warm_start_learning_rate},
-              {"straight_through_latents", c.straight_through_latents}};
+              {"straight_through_latents", c.straight_through_latents},
+              {"beta_usage", c.beta_usage}};
 }
 
 CompileConfig compile_config_from_json(const JsonView& v) {
@@ -156,6 +158,7 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   if (const auto rate = v.find("warm_start_learning_rate")) c.warm_start_learning_rate = rate->number();
   // Absent in models trained on relaxed latents only.
   if (const auto hard = v.find("straight_through_latents")) c.straight_through_latents = hard->boolean();
+  if (const auto usage = v.find("beta_usage")) c.beta_usage = usage->number();
   return c;
 }
 

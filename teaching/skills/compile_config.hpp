@@ -59,6 +59,11 @@ struct CompileConfig {
   // soft mixtures can tell two letters apart by mixtures that share their largest weight, so two letters
   // end up one skill at read-out. With hard codes in training, merging two letters costs reconstruction.
   bool straight_through_latents = false;
+  // Weight of a bonus for using many skills: the loss subtracts beta_usage times the entropy of the batch's
+  // mean latent posterior (over every segment of every trajectory). Why: a skill that starts out covering
+  // two letters keeps both, because an unused skill's decoder is untrained and moving one letter there first
+  // costs reconstruction; the bonus pays for that move. 0 = off (the paper's objective).
+  double beta_usage = 0.0;
 
   // Paper: latent 16, K 4, Poisson 10, beta_s 1, statediff+action, lr 1e-3, batch 100 (12-D states).
   static CompileConfig parking_defaults();

@@ -269,7 +269,10 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
     // p is exactly 0 outside 1..T_b (logits -1e30), so those positions add nothing whatever the prior says.
     out.kl_b = (p * (torch::log(p + kEps) - log_prior)).sum() * inv_b;
   }
-  out.total = out.nll_action + cfg.beta_s * out.nll_state + cfg.beta_z * out.kl_z + cfg.beta_b * out.kl_b;
+  const Tensor usage = q.mean(std::vector<std::int64_t>{0, 1});
+  out.usage_entropy = -(usage * torch::log(usage + kEps)).sum();
+  out.total = out.nll_action + cfg.beta_s * out.nll_state + cfg.beta_z * out.kl_z + cfg.beta_b * out.kl_b -
+              cfg.beta_usage * out.usage_entropy;
   out.boundary_ce = torch::zeros({});
   if (batch.supervise_boundaries && cfg.num_segments > 1) {
     for (int k = 0; k + 1 < cfg.num_segments; ++k) {

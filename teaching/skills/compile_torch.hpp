@@ -115,7 +115,8 @@ void run_decoder_feedback(const CompileNetwork& net, const Packing& packing, con
 // ---- forward pass -------------------------------------------------------------------------------------
 struct LossTerms {
   torch::Tensor total, nll_action, nll_state, kl_z, kl_b;  // scalars (mean over the batch)
-  torch::Tensor boundary_ce;  // Batch::supervise_boundaries only (else 0): -log p(fixed boundary), summed over k
+  torch::Tensor boundary_ce;    // Batch::supervise_boundaries only (else 0): -log p(fixed boundary), summed over k
+  torch::Tensor usage_entropy;  // entropy of the batch's mean latent posterior (CompileConfig::beta_usage)
 };
 struct HardReadout {
   std::vector<std::vector<int>> boundaries;  // [B][K] in model steps; the last equals the length

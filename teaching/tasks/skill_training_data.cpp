@@ -8,6 +8,7 @@
 #include "engine/core/rng.hpp"
 #include "engine/parking/parking_expert.hpp"
 #include "engine/parking/parking_trial.hpp"
+#include "engine/writing/infill.hpp"
 #include "engine/writing/step_data.hpp"
 #include "engine/writing/word_generator.hpp"
 #include "engine/writing/writing_scenario.hpp"
@@ -66,13 +67,58 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   return out;
 }
 
-SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed, AugmentDrawers drawer_choice) {
+namespace {
+
+// The step sequence the skill model sees for a learner's trace (as evaluate-skills --robustness builds it).
+StepSequence sampled_steps(const writing::TimedTrace& trace, const std::string& word) {
+  const writing::TimedTrace infilled = writing::infill_trace(trace);
+  return writing_step_sequence(writing::trace_step_data(infilled.points, writing::AlphabetKind::Classic, word));
+}
+
+// Interior boundaries (action indices) of `word`'s points moved to the infilled mouse readings of a sampling:
+// entry k of `lists` is a list of point indices; boundaries that would not stay ascending are dropped.
+std::vector<std::vector<int>> mouse_copy(const WrittenWord& word, std::vector<std::vector<int>> lists, Rng& rng,
+                                         StepSequence& steps) {
+  std::vector<int> points{0};
+  for (const auto& list : lists) points.insert(points.end(), list.begin(), list.end());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  WrittenWord marked = word;
+  marked.symbol_starts = points;
+  const SampledTrace sampled = mouse_sampled(marked, MouseSampling{}, rng);
+  const std::vector<int> moved = infilled_symbol_starts(sampled.trace, sampled.symbol_starts);
+  steps = sampled_steps(sampled.trace, word.word);
+  for (auto& list : lists) {
+    std::vector<int> out;
+    for (int p : list) {
+      const auto at = std::lower_bound(points.begin(), points.end(), p) - points.begin();
+      const int b = moved[static_cast<std::size_t>(at)];
+      if (b > (out.empty() ? 0 : out.back()) && b < steps.length()) out.push_back(b);
+    }
+    list = std::move(out);
+  }
+  return lists;
+}
+
+std::string augmented_description(int count, int copies, std::uint64_t seed, const WritingAugmentation& a) {
+  return std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
+         "), letters by " +
+         (a.drawers == AugmentDrawers::PaperAndTraining ? "the paper's and Omniglot drawers 1-10"
+                                                        : "the paper's drawer") +
+         ", plus " + std::to_string(copies) + " perturbed copies each (wobble <= 12 px, affine <= 0.12" +
+         (a.mouse ? ", mouse-sampled" : "") + ") with the clean words' repetition boundaries";
+}
+
+}  // namespace
+
+SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed,
+                                              const WritingAugmentation& augmentation) {
   if (count < 1 || copies < 0)
     throw InputError("writing demonstrations", "count must be at least 1, copies at least 0");
   const std::vector<std::string> words = writing::classic_words(count, seed);
   const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
   std::vector<int> drawers_pool =
-      drawer_choice == AugmentDrawers::PaperAndTraining ? training_drawers() : std::vector<int>{};
+      augmentation.drawers == AugmentDrawers::PaperAndTraining ? training_drawers() : std::vector<int>{};
   drawers_pool.push_back(0);  // the paper's drawer
   const Rng root = Rng(seed).fork(0xa0a0u);
   std::vector<WrittenWord> clean;
@@ -89,7 +135,7 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
   RepeatBoundaryConfig repeat;
   repeat.max_boundaries = CompileConfig::writing_defaults().num_segments - 1;
   const std::vector<std::vector<int>> warm = find_repeat_boundaries(clean_steps, repeat);
-  SkillDataSet out{"writing", "", {}, {}};
+  SkillDataSet out{"writing", augmented_description(count, copies, seed, augmentation), {}, {}};
   for (int i = 0; i < count; ++i) {
     const std::size_t u = static_cast<std::size_t>(i);
     out.demos.push_back({words[u], clean_steps[u], clean[u].interior_boundaries()});
@@ -98,20 +144,21 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
       Rng rng = root.fork(static_cast<std::uint64_t>(i)).fork(1u + static_cast<std::uint64_t>(c));
       const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
       const WrittenWord copy = perturbed(clean[u], {wobble, affine}, rng);
-      out.demos.push_back(
-          {words[u] + " (copy " + std::to_string(c + 1) + ")",
-           writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
-           copy.interior_boundaries()});
-      out.warm_boundaries.push_back(warm[u]);
+      const std::string label = words[u] + " (copy " + std::to_string(c + 1) + ")";
+      if (!augmentation.mouse) {
+        out.demos.push_back(
+            {label,
+             writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
+             copy.interior_boundaries()});
+        out.warm_boundaries.push_back(warm[u]);
+        continue;
+      }
+      StepSequence steps;
+      auto moved = mouse_copy(copy, {copy.interior_boundaries(), warm[u]}, rng, steps);
+      out.demos.push_back({label, std::move(steps), std::move(moved[0])});
+      out.warm_boundaries.push_back(std::move(moved[1]));
     }
   }
-  out.description =
-      std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
-      "), letters by " +
-      (drawer_choice == AugmentDrawers::PaperAndTraining ? "the paper's and Omniglot drawers 1-10"
-                                                         : "the paper's drawer") +
-      ", plus " + std::to_string(copies) +
-      " perturbed copies each (wobble <= 12 px, affine <= 0.12) with the clean words' repetition boundaries";
   return out;
 }
 

@@ -38,14 +38,21 @@ enum class AugmentDrawers {
   PaperAndTraining,  // each letter by a drawer drawn from the paper's and training_drawers()
   PaperOnly,         // every letter the paper's (the expert's glyphs: letters repeat exactly)
 };
-// Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn as `drawers`
+struct WritingAugmentation {
+  AugmentDrawers drawers = AugmentDrawers::PaperAndTraining;
+  // Copies are also read as a mouse reports them (MouseSampling's defaults: speed, screen grid, hesitations),
+  // the commonest way a learner's trace differs from the gold. The readings change the step count, so each
+  // inherited boundary moves to the reading the sampling maps its pen step to (as symbol starts move).
+  bool mouse = false;
+};
+// Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn as `augmentation`
 // says (the unseen drawers, unseen_drawers(), are never used), then `copies` perturbed
 // copies of each (writing_realistic_learner.hpp: smooth wobble up to 12 px, per-letter affine up to 0.12;
-// no resampling, so step indices are kept). warm_boundaries: the clean words' repetition boundaries
+// with `mouse`, then mouse-sampled). warm_boundaries: the clean words' repetition boundaries
 // (find_repeat_boundaries over the clean words, K - 1 = 7 at most), inherited by their copies; the true
 // boundaries are only kept as true_boundaries (for reports), never used to train.
 SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed,
-                                              AugmentDrawers drawers = AugmentDrawers::PaperAndTraining);
+                                              const WritingAugmentation& augmentation = {});
 // generate_parking_demos or generate_writing_demos for the task.
 SkillDataSet generate_task_demos(TaskKind task, int count, std::uint64_t seed);
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "teaching/skills/compile_torch.hpp"
+#include "teaching/skills/synthetic_sequences.hpp"
 
 namespace sc::compile_detail {
 namespace {
@@ -31,6 +32,30 @@ TEST(RelaxedLatent, StraightThroughIsTheSoftSamplesArgmaxForwardAndItsGradientBa
     EXPECT_TRUE(torch::allclose(hard_grad, soft_grad, 1e-6, 1e-7)) << "seed " << seed;
     EXPECT_GT(hard_grad.abs().sum().item<double>(), 0.0) << "seed " << seed;
   }
+}
+
+// The loss terms of one batch of writing-like words with untrained weights (generator at `seed`).
+LossTerms losses_with_usage_weight(double beta_usage, std::uint64_t seed) {
+  CompileConfig config = CompileConfig::writing_defaults();
+  config.beta_usage = beta_usage;
+  std::vector<StepSequence> raw;
+  for (const auto& p : writing_like_sequences(4, 8, 5)) raw.push_back(p.steps);
+  auto gen = at::detail::createCPUGenerator(seed);
+  const CompileNetwork net(config, gen);
+  const auto inputs = to_model_inputs(raw, config, "trajectory");
+  std::vector<const StepSequence*> steps;
+  for (const auto& m : inputs) steps.push_back(&m.steps);
+  auto sample = at::detail::createCPUGenerator(seed + 100);
+  return compute_losses(net, make_batch(steps, config), true, &sample);
+}
+
+TEST(CompileLosses, TheUsageBonusSubtractsTheEntropyOfTheMeanPosterior) {
+  const LossTerms plain = losses_with_usage_weight(0.0, 7), bonus = losses_with_usage_weight(2.5, 7);
+  const double entropy = bonus.usage_entropy.item<double>();
+  EXPECT_GT(entropy, 0.0);
+  EXPECT_LE(entropy, std::log(static_cast<double>(CompileConfig::writing_defaults().latent_size)) + 1e-9);
+  EXPECT_DOUBLE_EQ(plain.usage_entropy.item<double>(), entropy);
+  EXPECT_NEAR(bonus.total.item<double>(), plain.total.item<double>() - 2.5 * entropy, 1e-3);
 }
 
 }  // namespace

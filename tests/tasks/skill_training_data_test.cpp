@@ -43,6 +43,32 @@ TEST(SkillTrainingData, AugmentedCopiesKeepTheCleanWordsStepsAndWarmBoundaries) 
   EXPECT_EQ(split.train_warm_boundaries.size(), split.train.size());
 }
 
+TEST(SkillTrainingData, MouseSampledCopiesMoveTheirInheritedBoundariesWithTheReadings) {
+  const SkillDataSet data = generate_augmented_writing_demos(6, 1, 2, {AugmentDrawers::PaperOnly, true});
+  ASSERT_EQ(data.demos.size(), 12u);
+  int same_length = 0;
+  for (std::size_t i = 0; i < 12; i += 2) {
+    const SkillDemo& clean = data.demos[i];
+    const SkillDemo& copy = data.demos[i + 1];
+    same_length += copy.steps.length() == clean.steps.length();
+    ASSERT_EQ(copy.true_boundaries.size(), clean.true_boundaries.size()) << clean.label;
+    ASSERT_EQ(data.warm_boundaries[i + 1].size(), data.warm_boundaries[i].size()) << clean.label;
+    // Each boundary sits at the same share of the word (within a few percent: the pace varies along it).
+    for (std::size_t k = 0; k < clean.true_boundaries.size(); ++k) {
+      const double clean_share = static_cast<double>(clean.true_boundaries[k]) / clean.steps.length();
+      const double copy_share = static_cast<double>(copy.true_boundaries[k]) / copy.steps.length();
+      EXPECT_NEAR(copy_share, clean_share, 0.15) << clean.label << " boundary " << k;
+    }
+    const auto& warm = data.warm_boundaries[i + 1];
+    EXPECT_TRUE(std::is_sorted(warm.begin(), warm.end()));
+    if (!warm.empty()) {
+      EXPECT_LT(warm.back(), copy.steps.length());
+    }
+  }
+  EXPECT_LT(same_length, 6);  // the readings are not the pen steps
+  EXPECT_NE(data.description.find("mouse-sampled"), std::string::npos) << data.description;
+}
+
 TEST(SkillTrainingData, ParkingDemosAreParkedExpertPlans) {
   const SkillDataSet data = generate_parking_demos(3, 11);
   ASSERT_FALSE(data.demos.empty());
