@@ -74,7 +74,9 @@ void Renderer2D::begin_frame(Color clear) {
   gl_.BindVertexArray(0);
   gl_.ClearColor(clear.r, clear.g, clear.b, clear.a);
   gl_.ClearStencil(0);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  // Nothing tests depth, and only ghost ribbons use the stencil: flush() clears it under them alone. On a
+  // software rasteriser a full-screen depth/stencil clear costs as much as a layer of pixels.
+  gl_.Clear(GL_COLOR_BUFFER_BIT);
   vertices_.clear();
   batches_.clear();
   next_ghost_ref_ = 1;
@@ -211,6 +213,8 @@ void Renderer2D::flush() {
   }
   gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), vertices_.data());
   gl_.Enable(GL_SCISSOR_TEST);
+  const std::optional<ScissorBox> ghosts = ghost_bounds();
+  if (ghosts) clear_stencil(*ghosts);
   int previous_ref = 0;
   for (const Batch& batch : batches_) {
     // Scissor takes a bottom-left origin; our pixels have a top-left origin.
@@ -221,9 +225,8 @@ void Renderer2D::flush() {
     gl_.Scissor(x0, fb_h - y1, std::max(0, x1 - x0), std::max(0, y1 - y0));
     if (batch.stencil_ref > 0) {
       if (batch.stencil_ref < previous_ref) {  // wrapped after 255 ghosts: start the stencil afresh
-        gl_.Disable(GL_SCISSOR_TEST);
-        gl_.Clear(GL_STENCIL_BUFFER_BIT);
-        gl_.Enable(GL_SCISSOR_TEST);
+        clear_stencil(*ghosts);
+        gl_.Scissor(x0, fb_h - y1, std::max(0, x1 - x0), std::max(0, y1 - y0));
       }
       gl_.Enable(GL_STENCIL_TEST);
       gl_.StencilFunc(GL_NOTEQUAL, batch.stencil_ref, 0xFF);
@@ -237,6 +240,31 @@ void Renderer2D::flush() {
   }
   vertices_.clear();
   batches_.clear();
+}
+
+std::optional<Renderer2D::ScissorBox> Renderer2D::ghost_bounds() const {
+  float min_x = 1e30f, min_y = 1e30f, max_x = -1e30f, max_y = -1e30f;
+  for (const Batch& batch : batches_) {
+    if (batch.stencil_ref == 0) continue;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) {
+      min_x = std::min(min_x, vertices_[i].x);
+      max_x = std::max(max_x, vertices_[i].x);
+      min_y = std::min(min_y, vertices_[i].y);
+      max_y = std::max(max_y, vertices_[i].y);
+    }
+  }
+  if (min_x > max_x) return std::nullopt;
+  const int fb_w = context_.width(), fb_h = context_.height();
+  const int x0 = std::clamp(static_cast<int>(std::floor(min_x)), 0, fb_w);
+  const int x1 = std::clamp(static_cast<int>(std::ceil(max_x)), 0, fb_w);
+  const int y0 = std::clamp(static_cast<int>(std::floor(min_y)), 0, fb_h);
+  const int y1 = std::clamp(static_cast<int>(std::ceil(max_y)), 0, fb_h);
+  return ScissorBox{x0, fb_h - y1, x1 - x0, y1 - y0};
+}
+
+void Renderer2D::clear_stencil(const ScissorBox& box) {
+  gl_.Scissor(box.x, box.y, box.width, box.height);
+  gl_.Clear(GL_STENCIL_BUFFER_BIT);
 }
 
 }  // namespace sc
