@@ -84,6 +84,7 @@ class Renderer2D {
     std::size_t count = 0;
     PixelViewport clip;
     int stencil_ref = 0;  // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
+    std::optional<Color> clear;  // set: no triangles, the clip rectangle is cleared to this colour
   };
 
   // A stroke narrower than a pixel is drawn one pixel wide with its colour's alpha scaled by its width: the
@@ -97,6 +98,9 @@ class Renderer2D {
     int x, y, width, height;
   };
 
+  // An opaque upright rectangle over the whole of a pixel-aligned viewport (a scene's ground) is a scissored
+  // clear: the same pixels, without blending and shading every one of them.
+  bool fills_viewport(const RotatedRect& rect, Color color) const;
   float to_world(Stroke stroke) const;
   ThinStroke thin_stroke(Stroke stroke, Color color) const;
   float chord_error_world() const;  // a quarter pixel in world units

@@ -69,6 +69,31 @@ TEST(RendererGolden, SceneIsBatchedIntoFewDrawCalls) {
   EXPECT_GT(renderer.last_frame_stats().vertices, 200 * 36);
 }
 
+TEST(RendererGolden, OpaqueGroundOverAPixelAlignedViewportIsAClearOfTheSamePixels) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 64, 48);
+  Renderer2D renderer(*context);
+  const Color ground = Color::hex(0x5a5f66);
+  auto draw = [&](PixelViewport viewport, RotatedRect rect, Color color) {
+    renderer.begin_frame(Color::hex(0x14181f));
+    renderer.set_camera(Camera2D({-10, -5, 10, 5}, viewport, WorldYAxis::down));
+    renderer.fill_rect(rect, color);
+    renderer.end_frame();
+    return context->read_rgba();
+  };
+  const RotatedRect whole{{0, 0}, {10, 5}, 0};
+  const RgbaImage cleared = draw({8, 4, 40, 20}, whole, ground);
+  EXPECT_EQ(renderer.last_frame_stats().vertices, 0);  // no triangles: a scissored clear
+  // The same rectangle drawn as geometry (a hair larger than the viewport, so not a clear) gives the same image.
+  const RgbaImage drawn = draw({8, 4, 40, 20}, {{0, 0}, {10.001f, 5.001f}, 0.0001f}, ground);
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+  EXPECT_EQ(compare_images(drawn, cleared, 0).differing_pixels, 0u);
+  // Translucent, or over a viewport with fractional edges (whose edge pixels are partly covered): geometry.
+  draw({8, 4, 40, 20}, whole, ground.with_alpha(0.5f));
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+  draw({8.5f, 4, 40, 20}, whole, ground);
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+}
+
 TEST(RendererGolden, UnknownBackendVariableIsAnInputError) {
   setenv("SKILLCOACH_GL", "vulkan", 1);
   EXPECT_THROW(offscreen_backend_from_env(), InputError);
