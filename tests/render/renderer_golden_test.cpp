@@ -94,6 +94,28 @@ TEST(RendererGolden, OpaqueGroundOverAPixelAlignedViewportIsAClearOfTheSamePixel
   EXPECT_GT(renderer.last_frame_stats().vertices, 0);
 }
 
+// Ghost ribbons take stencil values 1..255; the 256th reuses 1 after the stencil is cleared again, so it
+// must blend over the first where they overlap, exactly as a second ghost does.
+TEST(RendererGolden, GhostAfterTheStencilValuesWrapStillBlends) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 64, 64);
+  Renderer2D renderer(*context);
+  const std::array<Vec2f, 2> over{Vec2f{8, 16}, Vec2f{40, 16}};
+  const std::array<Vec2f, 2> aside{Vec2f{8, 48}, Vec2f{40, 48}};
+  const Color ghost = Color::hex(0xffffff, 0.3f);
+  auto pixel_after = [&](int ghosts_between) {
+    renderer.begin_frame(Color::hex(0x000000));
+    renderer.ghost_ribbon(over, Stroke::pixels(8), ghost);
+    for (int i = 0; i < ghosts_between; ++i) renderer.ghost_ribbon(aside, Stroke::pixels(8), ghost);
+    renderer.ghost_ribbon(over, Stroke::pixels(8), ghost);
+    renderer.end_frame();
+    const RgbaImage image = context->read_rgba();
+    return static_cast<int>(image.at(24, 16)[0]);  // red
+  };
+  const auto twice = pixel_after(0);
+  EXPECT_GT(twice, 100);  // two blends of 30 % white: ~130, one would be ~77
+  EXPECT_EQ(pixel_after(254), twice);
+}
+
 TEST(RendererGolden, UnknownBackendVariableIsAnInputError) {
   setenv("SKILLCOACH_GL", "vulkan", 1);
   EXPECT_THROW(offscreen_backend_from_env(), InputError);
