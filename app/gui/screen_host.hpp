@@ -24,6 +24,7 @@ class ScreenHost {
 
   // Make the ImGui context current and feed platform input to ImGui (io.MousePos, ...) before calling frame().
   ImGuiLayer& imgui() { return imgui_; }
+  const Renderer2D& renderer() const { return renderer_; }
   Navigator& navigator() { return navigator_; }
 
   // One displayed frame: `elapsed_seconds` of wall time since the previous one.

@@ -7,7 +7,10 @@
 // Per frame: [platform backend NewFrame + input], begin_frame(), ImGui calls, end_frame() after the scene.
 #include <imgui.h>
 
+#include <memory>
+
 #include "engine/render/gl_context.hpp"
+#include "engine/render/imgui_solid_fills.hpp"
 
 namespace sc {
 
@@ -47,6 +50,7 @@ class ImGuiLayer {
   ImGuiContext* imgui_ = nullptr;
   float scale_ = 0;
   UiFonts fonts_;
+  std::unique_ptr<ImGuiSolidFills> solid_fills_;
 };
 
 // The SkillCoach look: dark slate background, one blue accent, rounded widgets, generous spacing.

@@ -20,6 +20,8 @@ bool same_clip(const PixelViewport& a, const PixelViewport& b) {
   return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
 }
 
+bool whole_pixel(float v) { return std::abs(v - std::round(v)) < 1e-3f; }
+
 }  // namespace
 
 Renderer2D::Renderer2D(GlContext& context)
@@ -74,7 +76,9 @@ void Renderer2D::begin_frame(Color clear) {
   gl_.BindVertexArray(0);
   gl_.ClearColor(clear.r, clear.g, clear.b, clear.a);
   gl_.ClearStencil(0);
-  gl_.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  // Nothing tests depth, and only ghost ribbons use the stencil: flush() clears it under them alone. On a
+  // software rasteriser a full-screen depth/stencil clear costs as much as a layer of pixels.
+  gl_.Clear(GL_COLOR_BUFFER_BIT);
   vertices_.clear();
   batches_.clear();
   next_ghost_ref_ = 1;
@@ -119,15 +123,32 @@ void Renderer2D::push(const ConvexPieces& pieces, Color color, int stencil_ref) 
     vertices_.push_back({px.x, px.y, v.coverage > 0.5f ? inside : outside});
   }
   const PixelViewport& clip = camera_.viewport();
-  if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 &&
+  if (stencil_ref == 0 && !batches_.empty() && batches_.back().stencil_ref == 0 && !batches_.back().clear &&
       same_clip(batches_.back().clip, clip)) {
     batches_.back().count += feathered_.size();
   } else {
-    batches_.push_back({first, feathered_.size(), clip, stencil_ref});
+    batches_.push_back({first, feathered_.size(), clip, stencil_ref, std::nullopt});
   }
 }
 
+bool Renderer2D::fills_viewport(const RotatedRect& rect, Color color) const {
+  const PixelViewport& v = camera_.viewport();
+  if (rect.angle != 0.0f || color.a < 1.0f) return false;
+  if (!whole_pixel(v.x) || !whole_pixel(v.y) || !whole_pixel(v.x + v.width) || !whole_pixel(v.y + v.height))
+    return false;
+  const Vec2f a = camera_.world_to_pixel(rect.center - rect.half_size);
+  const Vec2f b = camera_.world_to_pixel(rect.center + rect.half_size);
+  constexpr float slack = 1e-3f;
+  return std::min(a.x, b.x) <= v.x + slack && std::max(a.x, b.x) >= v.x + v.width - slack &&
+         std::min(a.y, b.y) <= v.y + slack && std::max(a.y, b.y) >= v.y + v.height - slack;
+}
+
 void Renderer2D::fill_rect(const RotatedRect& rect, Color color) {
+  if (!in_frame_) throw InputError("Renderer2D", "drawing outside begin_frame()/end_frame()");
+  if (fills_viewport(rect, color)) {
+    batches_.push_back({vertices_.size(), 0, camera_.viewport(), 0, color});
+    return;
+  }
   scratch_.clear();
   append_convex_polygon(scratch_, rect_corners(rect));
   push(scratch_, color);
@@ -198,7 +219,7 @@ void Renderer2D::arrow(Vec2f from, Vec2f to, Stroke stroke, ArrowHead head, Colo
 
 void Renderer2D::flush() {
   stats_.vertices = static_cast<int>(vertices_.size());
-  if (vertices_.empty()) return;
+  if (batches_.empty()) return;
   const int fb_w = context_.width(), fb_h = context_.height();
   gl_.UseProgram(program_.id());
   gl_.Uniform2f(framebuffer_size_uniform_, static_cast<float>(fb_w), static_cast<float>(fb_h));
@@ -211,6 +232,8 @@ void Renderer2D::flush() {
   }
   gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(bytes), vertices_.data());
   gl_.Enable(GL_SCISSOR_TEST);
+  const std::optional<ScissorBox> ghosts = ghost_bounds();
+  if (ghosts) clear_stencil(*ghosts);
   int previous_ref = 0;
   for (const Batch& batch : batches_) {
     // Scissor takes a bottom-left origin; our pixels have a top-left origin.
@@ -219,11 +242,15 @@ void Renderer2D::flush() {
     const int x1 = static_cast<int>(std::ceil(batch.clip.x + batch.clip.width));
     const int y0 = static_cast<int>(std::floor(batch.clip.y));
     gl_.Scissor(x0, fb_h - y1, std::max(0, x1 - x0), std::max(0, y1 - y0));
+    if (batch.clear) {
+      gl_.ClearColor(batch.clear->r, batch.clear->g, batch.clear->b, batch.clear->a);
+      gl_.Clear(GL_COLOR_BUFFER_BIT);
+      continue;
+    }
     if (batch.stencil_ref > 0) {
       if (batch.stencil_ref < previous_ref) {  // wrapped after 255 ghosts: start the stencil afresh
-        gl_.Disable(GL_SCISSOR_TEST);
-        gl_.Clear(GL_STENCIL_BUFFER_BIT);
-        gl_.Enable(GL_SCISSOR_TEST);
+        clear_stencil(*ghosts);
+        gl_.Scissor(x0, fb_h - y1, std::max(0, x1 - x0), std::max(0, y1 - y0));
       }
       gl_.Enable(GL_STENCIL_TEST);
       gl_.StencilFunc(GL_NOTEQUAL, batch.stencil_ref, 0xFF);
@@ -237,6 +264,31 @@ void Renderer2D::flush() {
   }
   vertices_.clear();
   batches_.clear();
+}
+
+std::optional<Renderer2D::ScissorBox> Renderer2D::ghost_bounds() const {
+  float min_x = 1e30f, min_y = 1e30f, max_x = -1e30f, max_y = -1e30f;
+  for (const Batch& batch : batches_) {
+    if (batch.stencil_ref == 0) continue;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) {
+      min_x = std::min(min_x, vertices_[i].x);
+      max_x = std::max(max_x, vertices_[i].x);
+      min_y = std::min(min_y, vertices_[i].y);
+      max_y = std::max(max_y, vertices_[i].y);
+    }
+  }
+  if (min_x > max_x) return std::nullopt;
+  const int fb_w = context_.width(), fb_h = context_.height();
+  const int x0 = std::clamp(static_cast<int>(std::floor(min_x)), 0, fb_w);
+  const int x1 = std::clamp(static_cast<int>(std::ceil(max_x)), 0, fb_w);
+  const int y0 = std::clamp(static_cast<int>(std::floor(min_y)), 0, fb_h);
+  const int y1 = std::clamp(static_cast<int>(std::ceil(max_y)), 0, fb_h);
+  return ScissorBox{x0, fb_h - y1, x1 - x0, y1 - y0};
+}
+
+void Renderer2D::clear_stencil(const ScissorBox& box) {
+  gl_.Scissor(box.x, box.y, box.width, box.height);
+  gl_.Clear(GL_STENCIL_BUFFER_BIT);
 }
 
 }  // namespace sc

@@ -48,7 +48,8 @@ class Renderer2D {
   Renderer2D& operator=(const Renderer2D&) = delete;
 
   // Resets every piece of GL state we depend on (so a frame never depends on what came before), binds the
-  // context's framebuffer, clears colour and stencil, and sets a camera showing the whole framebuffer in pixels.
+  // context's framebuffer, clears its colour (the stencil is cleared under the ghost ribbons when they are
+  // drawn; depth is never used), and sets a camera showing the whole framebuffer in pixels.
   void begin_frame(Color clear);
   // Draws everything batched since begin_frame. GL state is left for ImGui to draw on top.
   void end_frame();
@@ -83,6 +84,7 @@ class Renderer2D {
     std::size_t count = 0;
     PixelViewport clip;
     int stencil_ref = 0;  // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
+    std::optional<Color> clear;  // set: no triangles, the clip rectangle is cleared to this colour
   };
 
   // A stroke narrower than a pixel is drawn one pixel wide with its colour's alpha scaled by its width: the
@@ -92,12 +94,22 @@ class Renderer2D {
     Color color;
   };
 
+  struct ScissorBox {  // GL's bottom-left origin
+    int x, y, width, height;
+  };
+
+  // An opaque upright rectangle over the whole of a pixel-aligned viewport (a scene's ground) is a scissored
+  // clear: the same pixels, without blending and shading every one of them.
+  bool fills_viewport(const RotatedRect& rect, Color color) const;
   float to_world(Stroke stroke) const;
   ThinStroke thin_stroke(Stroke stroke, Color color) const;
   float chord_error_world() const;  // a quarter pixel in world units
   // Feathers the pieces (a one-pixel anti-aliasing ramp on their outline) and batches them.
   void push(const ConvexPieces& pieces, Color color, int stencil_ref = 0);
   void flush();
+  // The pixels the batched ghost ribbons can touch, if there are any.
+  std::optional<ScissorBox> ghost_bounds() const;
+  void clear_stencil(const ScissorBox& box);
 
   GlContext& context_;
   const GlFunctions& gl_;

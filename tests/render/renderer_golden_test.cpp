@@ -69,6 +69,53 @@ TEST(RendererGolden, SceneIsBatchedIntoFewDrawCalls) {
   EXPECT_GT(renderer.last_frame_stats().vertices, 200 * 36);
 }
 
+TEST(RendererGolden, OpaqueGroundOverAPixelAlignedViewportIsAClearOfTheSamePixels) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 64, 48);
+  Renderer2D renderer(*context);
+  const Color ground = Color::hex(0x5a5f66);
+  auto draw = [&](PixelViewport viewport, RotatedRect rect, Color color) {
+    renderer.begin_frame(Color::hex(0x14181f));
+    renderer.set_camera(Camera2D({-10, -5, 10, 5}, viewport, WorldYAxis::down));
+    renderer.fill_rect(rect, color);
+    renderer.end_frame();
+    return context->read_rgba();
+  };
+  const RotatedRect whole{{0, 0}, {10, 5}, 0};
+  const RgbaImage cleared = draw({8, 4, 40, 20}, whole, ground);
+  EXPECT_EQ(renderer.last_frame_stats().vertices, 0);  // no triangles: a scissored clear
+  // The same rectangle drawn as geometry (a hair larger than the viewport, so not a clear) gives the same image.
+  const RgbaImage drawn = draw({8, 4, 40, 20}, {{0, 0}, {10.001f, 5.001f}, 0.0001f}, ground);
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+  EXPECT_EQ(compare_images(drawn, cleared, 0).differing_pixels, 0u);
+  // Translucent, or over a viewport with fractional edges (whose edge pixels are partly covered): geometry.
+  draw({8, 4, 40, 20}, whole, ground.with_alpha(0.5f));
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+  draw({8.5f, 4, 40, 20}, whole, ground);
+  EXPECT_GT(renderer.last_frame_stats().vertices, 0);
+}
+
+// Ghost ribbons take stencil values 1..255; the 256th reuses 1 after the stencil is cleared again, so it
+// must blend over the first where they overlap, exactly as a second ghost does.
+TEST(RendererGolden, GhostAfterTheStencilValuesWrapStillBlends) {
+  auto context = create_offscreen_context(offscreen_backend_from_env(), 64, 64);
+  Renderer2D renderer(*context);
+  const std::array<Vec2f, 2> over{Vec2f{8, 16}, Vec2f{40, 16}};
+  const std::array<Vec2f, 2> aside{Vec2f{8, 48}, Vec2f{40, 48}};
+  const Color ghost = Color::hex(0xffffff, 0.3f);
+  auto pixel_after = [&](int ghosts_between) {
+    renderer.begin_frame(Color::hex(0x000000));
+    renderer.ghost_ribbon(over, Stroke::pixels(8), ghost);
+    for (int i = 0; i < ghosts_between; ++i) renderer.ghost_ribbon(aside, Stroke::pixels(8), ghost);
+    renderer.ghost_ribbon(over, Stroke::pixels(8), ghost);
+    renderer.end_frame();
+    const RgbaImage image = context->read_rgba();
+    return static_cast<int>(image.at(24, 16)[0]);  // red
+  };
+  const auto twice = pixel_after(0);
+  EXPECT_GT(twice, 100);  // two blends of 30 % white: ~130, one would be ~77
+  EXPECT_EQ(pixel_after(254), twice);
+}
+
 TEST(RendererGolden, UnknownBackendVariableIsAnInputError) {
   setenv("SKILLCOACH_GL", "vulkan", 1);
   EXPECT_THROW(offscreen_backend_from_env(), InputError);
