@@ -1,6 +1,7 @@
 #include "teaching/records/postgres_store.hpp"
 
 #include <cstdio>
+#include <optional>
 
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
@@ -36,15 +37,23 @@ bool is_passing_fault(const PgError& e) {
 
 }  // namespace
 
+// A connection the server dropped (a restart) is only found out by using it: `fn` runs once more on a new
+// connection. Only for work that is safe to repeat (reads, locks, BEGIN).
+template <typename Fn>
+auto PostgresStore::with_reconnect(Fn&& fn) const {
+  try {
+    return fn(connection());
+  } catch (const PgError& e) {
+    if (!e.connection_lost()) throw;
+    db_.reset();
+    return fn(connection());
+  }
+}
+
 template <typename Fn>
 auto PostgresStore::read(Fn&& query) const {
   try {
-    try {
-      return query(connection());
-    } catch (const PgError& e) {
-      if (!e.connection_lost()) throw;
-      return query(connection());  // the server restarted since the last use: once more on a new connection
-    }
+    return with_reconnect(query);
   } catch (const PgError& e) {
     throw InputError(label_.string(), std::string("cannot be read (") + e.what() + ")");
   }
@@ -54,9 +63,10 @@ template <typename Fn>
 auto PostgresStore::write_now(const std::string& what, Fn&& write) {
   if (options_.read_only) throw InputError(label_.string(), "cannot " + what + ": the store was opened read-only");
   try {
-    PgTransaction transaction(connection());
+    std::optional<PgTransaction> transaction;
+    with_reconnect([&](PgDb& db) { return &transaction.emplace(db); });
     auto result = write(connection());
-    transaction.commit();
+    transaction->commit();
     return result;
   } catch (const PgError& e) {
     throw InputError(label_.string(), "cannot " + what + ": " + e.what());
@@ -119,7 +129,10 @@ void PostgresStore::lock_learner(PgDb& db, const std::string& name) const {
 void PostgresStore::claim_learner(std::string_view name) const {
   if (options_.read_only || claimed_.count(name) != 0) return;
   try {
-    lock_learner(connection(), std::string(name));
+    with_reconnect([&](PgDb& db) {
+      lock_learner(db, std::string(name));
+      return 0;
+    });
   } catch (const PgError& e) {
     throw InputError(label_.string(), e.what());
   }

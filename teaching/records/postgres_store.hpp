@@ -82,6 +82,8 @@ class PostgresStore final : public RecordStore {
   int next_seq(std::int64_t session_id);
   void require_session(std::int64_t session_id) const;
   template <typename Fn>
+  auto with_reconnect(Fn&& fn) const;
+  template <typename Fn>
   auto read(Fn&& query) const;  // one retry on a fresh connection; failures become sc::InputError
   template <typename Fn>
   auto write_now(const std::string& what, Fn&& write);  // one transaction; failures throw sc::InputError

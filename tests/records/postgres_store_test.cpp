@@ -118,6 +118,13 @@ TEST_F(PostgresStoreTest, AServerRestartMidSessionLosesNothingAndTheNextTrialIsS
   EXPECT_TRUE(store->record_trial(sample_trial(id, 1)).stored);
   EXPECT_NE(test::error_of([&] { under.open()->begin_session(sample_session("Ada")); }), "(no error)");
   EXPECT_EQ(store->trials_of_session(id).size(), 2u);
+  // Starting a session and reading after a restart work at once too.
+  server("pause");
+  server("resume");
+  EXPECT_NO_THROW(store->begin_session(sample_session("Ada", "writing")));
+  server("pause");
+  server("resume");
+  EXPECT_EQ(store->list_learners().at(0).sessions.size(), 2u);
 }
 
 // Ten desktops, each with its own learner, write a session at the same moment; every trial a desktop was
