@@ -172,7 +172,11 @@ void PgDb::check(PGresult* result, std::string_view what) {
   throw PgError(std::move(sqlstate), lost, what.empty() ? message : std::string(what) + ": " + message);
 }
 
-void PgDb::exec(std::string_view sql) { check(PQexec(conn_, std::string(sql).c_str()), ""); }
+void PgDb::exec(std::string_view sql) {
+  PGresult* result = PQexec(conn_, std::string(sql).c_str());
+  check(result, "");  // frees a failed result
+  PQclear(result);
+}
 
 std::int64_t PgDb::query_int(std::string_view sql) {
   auto stmt = prepare(sql);

@@ -89,7 +89,8 @@ class PgDb {
   bool connection_ok() const;
   pg_conn* raw() { return conn_; }
 
-  // Throws PgError for a failed result (and frees it); `what` prefixes the message.
+  // Throws PgError for a failed result (and frees it); a successful one stays the caller's to free.
+  // `what` prefixes the message.
   void check(pg_result* result, std::string_view what);
   void set_changes(std::int64_t n) { changes_ = n; }
 
