@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
       "  skillcoach <command> --help      options and an example for one command");
   sc::GuiOptions gui;
   app.add_option("--data-dir", gui.data_dir, "Where learner records are kept (default: XDG data directory)");
+  app.add_option("--store", gui.store,
+                 "Keep the records on a class's PostgreSQL server instead (postgresql:// URL, docs/database.md); "
+                 "--data-dir then holds only what the server could not take yet");
   app.add_option("--script", gui.script,
                  "Play an input script (JSON) instead of reading devices, offscreen without a display "
                  "(end-to-end tests; docs/input-script.md)")

@@ -19,6 +19,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtorch-dev libopenblas0-pthread
   libsqlite3-dev nlohmann-json3-dev libcli11-dev
+  libpq-dev postgresql  # the shared store's client; the server for its tests (docs/database.md)
   fonts-dejavu-core xvfb xauth
 )
 

@@ -16,6 +16,7 @@
 #include "app/core/learn_scripted_learner.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
+#include "teaching/records/open_record_store.hpp"
 #include "teaching/sessions/training_session.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 
@@ -25,6 +26,7 @@ namespace {
 struct LearnOptions {
   TaskKind task = TaskKind::parking;
   std::string data_dir;
+  std::string store;  // empty: the SQLite store in data_dir
   std::string learner = "scripted learner";
   std::string condition = "adaptive";
   std::string device = "keyboard";
@@ -86,7 +88,7 @@ void print_skills(const TrainingSession& s, const RoundSummary& summary) {
 constexpr int kExitRecordsNotSaved = 3;
 
 // A last attempt to store what is pending; says what is not stored and where it is.
-int report_unsaved(records::LearnerStore& store) {
+int report_unsaved(records::RecordStore& store) {
   const auto result = store.flush();
   if (result.pending == 0) return 0;
   std::fprintf(stderr, "skillcoach: error: %s; %s\n", result.message.c_str(),
@@ -96,7 +98,7 @@ int report_unsaved(records::LearnerStore& store) {
 }
 
 // The new session's settings; the lot is the learner's first-session default unless --lot names one.
-SessionSettings new_settings(const LearnOptions& o, const records::LearnerStore& store) {
+SessionSettings new_settings(const LearnOptions& o, const records::RecordStore& store) {
   SessionSettings settings;
   settings.learner = o.learner;
   settings.device = o.device;
@@ -122,7 +124,7 @@ std::string lot_words(const SessionSettings& settings) {
 // Study mode: the learner is enrolled (if not yet) and gets the study's task and their assigned condition.
 // A participant has one session in the study: an unfinished one resumes, a finished one ends the study for
 // them.
-LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store) {
+LearnOptions enrol_in_study(LearnOptions o, records::RecordStore& store) {
   const auto study = store.study(o.study);
   if (!study) throw InputError(store.database_path().string(), "has no study \"" + o.study + "\"");
   if (o.condition_given) throw InputError("--condition", "cannot be combined with --study: the study assigns it");
@@ -147,7 +149,10 @@ LearnOptions enrol_in_study(LearnOptions o, records::LearnerStore& store) {
 int run(LearnOptions o) {
   if (o.task == TaskKind::writing && o.lot != "auto")
     throw InputError("--lot", "is a parking setting (writing has no lot)");
-  records::LearnerStore store(o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir));
+  const std::filesystem::path data_dir =
+      o.data_dir.empty() ? records::default_data_dir() : std::filesystem::path(o.data_dir);
+  const auto opened = records::open_record_store(o.store.empty() ? data_dir.string() : o.store, {}, data_dir);
+  records::RecordStore& store = *opened;
   if (!store.open_message().empty()) std::fprintf(stderr, "skillcoach: warning: %s\n", store.open_message().c_str());
   if (!o.study.empty()) o = enrol_in_study(o, store);
   const auto point = store.find_unfinished_session(o.learner, to_string(o.task));
@@ -194,6 +199,9 @@ CommandRunner setup_learn(CLI::App& sub) {
   auto o = std::make_shared<LearnOptions>();
   CLI::Option* task = add_task_option(sub, o->task, "parking (default) or writing");
   sub.add_option("--data-dir", o->data_dir, "Directory of the learner database (default: XDG data directory)");
+  sub.add_option("--store", o->store,
+                 "Where the records go instead: a postgresql:// URL shared by a class (docs/database.md); "
+                 "--data-dir then keeps the records the server could not take yet");
   sub.add_option("--learner", o->learner, "Learner's name")->capture_default_str();
   CLI::Option* condition =
       sub.add_option("--condition", o->condition, "Study condition (research mode)")->capture_default_str();

@@ -16,6 +16,9 @@ namespace {
 
 struct ReportOptions {
   std::string data_dir;
+  std::string store;
+  std::string from;
+  std::string to;
   std::string learner;
   std::int64_t session = 0;
   std::string out;
@@ -25,7 +28,11 @@ CommandRunner setup_report(CLI::App& sub) {
   auto options = std::make_shared<ReportOptions>();
   sub.add_option("--data-dir", options->data_dir,
                  "Directory holding skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  sub.add_option("--store", options->store, "Instead of --data-dir: a data directory or a class's postgresql:// URL")
+      ->excludes("--data-dir");
   sub.add_option("--learner", options->learner, "Learner's name")->required();
+  sub.add_option("--from", options->from, "Only sessions started on or after this ISO date/time (e.g. 2026-12-01)");
+  sub.add_option("--to", options->to, "Only sessions started on or before this ISO date/time (e.g. 2026-12-03)");
   CLI::Option* session =
       sub.add_option("--session", options->session, "Only this session id (default: every session of the learner)");
   sub.add_option("--out", options->out, "Folder to write the report into (created)")->required();
@@ -33,7 +40,10 @@ CommandRunner setup_report(CLI::App& sub) {
     ReportRequest request;
     request.data_dir =
         options->data_dir.empty() ? records::default_data_dir() : std::filesystem::path(options->data_dir);
+    request.store = options->store;
     request.learner = options->learner;
+    request.from = options->from;
+    request.to = options->to;
     if (session->count() > 0) request.session = options->session;
     request.out = options->out;
     const ReportResult result = write_learner_report(request);

@@ -15,8 +15,7 @@
 #include "app/cli/task_option.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/curricula/study_condition.hpp"
-#include "teaching/records/data_dir.hpp"
-#include "teaching/records/learner_store.hpp"
+#include "teaching/records/open_record_store.hpp"
 #include "teaching/records/record_studies.hpp"
 #include "teaching/studies/study_analysis.hpp"
 
@@ -34,7 +33,7 @@ struct StudyOptions {
   bool participants = false;
 };
 
-records::StudyDefinition require_study(const records::LearnerStore& store, const std::string& name) {
+records::StudyDefinition require_study(const records::RecordStore& store, const std::string& name) {
   auto study = store.study(name);
   if (!study) throw InputError(store.database_path().string(), "has no study \"" + name + "\"");
   return *study;
@@ -49,27 +48,27 @@ int create(const StudyOptions& o, bool seed_given) {
   // An unguessable default: who knows the seed can foresee every assignment. It is stored with the study.
   study.seed = seed_given ? o.seed : (std::uint64_t{std::random_device{}()} << 32) ^ std::random_device{}();
   study.created = records::utc_timestamp_now();
-  records::LearnerStore store(records::data_dir_of_store(o.store));
-  store.create_study(study);
+  const auto store = records::open_record_store(o.store);
+  store->create_study(study);
   std::printf("created study \"%s\" in %s: %s, %zu conditions x %d participants, seed %llu\n", study.name.c_str(),
-              store.database_path().string().c_str(), study.task.c_str(), study.conditions.size(),
+              store->database_path().string().c_str(), study.task.c_str(), study.conditions.size(),
               study.target_per_condition, static_cast<unsigned long long>(study.seed));
   return 0;
 }
 
 int enrol(const StudyOptions& o) {
-  records::LearnerStore store(records::data_dir_of_store(o.store));
-  const records::StudyDefinition study = require_study(store, o.name);
-  const auto before = store.study_participants(o.name).size();
-  const records::StudyParticipant p = store.enrol(o.name, o.learner, records::utc_timestamp_now());
-  const bool is_new = store.study_participants(o.name).size() > before;
+  const auto store = records::open_record_store(o.store);
+  const records::StudyDefinition study = require_study(*store, o.name);
+  const auto before = store->study_participants(o.name).size();
+  const records::StudyParticipant p = store->enrol(o.name, o.learner, records::utc_timestamp_now());
+  const bool is_new = store->study_participants(o.name).size() > before;
   std::printf("%s \"%s\" in study \"%s\" as participant %d of %d (the condition is not shown)\n",
               is_new ? "enrolled" : "already enrolled:", p.learner.c_str(), study.name.c_str(), p.seq,
               study.capacity());
   return 0;
 }
 
-void print_study(const records::LearnerStore& store, const records::StudyDefinition& study, bool participants) {
+void print_study(const records::RecordStore& store, const records::StudyDefinition& study, bool participants) {
   const auto enrolled = store.study_participants(study.name);
   const auto outcomes = participant_outcomes(enrolled, store.study_sessions(study.name));
   std::printf("study \"%s\": %s, seed %llu, created %s\n", study.name.c_str(), study.task.c_str(),
@@ -93,7 +92,8 @@ void print_study(const records::LearnerStore& store, const records::StudyDefinit
 }
 
 int status(const StudyOptions& o) {
-  const records::LearnerStore store(records::data_dir_of_store(o.store), records::StoreOptions{.read_only = true});
+  const auto opened = records::open_record_store(o.store, records::StoreOptions{.read_only = true});
+  const records::RecordStore& store = *opened;
   if (!o.name.empty()) {
     print_study(store, require_study(store, o.name), o.participants);
     return 0;
@@ -105,9 +105,9 @@ int status(const StudyOptions& o) {
 }
 
 void add_store_option(CLI::App& app, std::string& store) {
-  app.add_option(
-      "--store", store,
-      "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  app.add_option("--store", store,
+                 "Data directory, its skillcoach.db, or a postgresql:// URL (a shared server; see docs/database.md) "
+                 "(default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
 }
 
 CommandRunner setup_study(CLI::App& sub) {

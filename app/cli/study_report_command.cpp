@@ -17,8 +17,7 @@
 #include "engine/render/gl_context.hpp"
 #include "engine/render/strip_box_chart_image.hpp"
 #include "teaching/curricula/study_condition.hpp"
-#include "teaching/records/data_dir.hpp"
-#include "teaching/records/learner_store.hpp"
+#include "teaching/records/open_record_store.hpp"
 #include "teaching/studies/study_report_files.hpp"
 #include "teaching/studies/study_report_html.hpp"
 
@@ -96,7 +95,8 @@ void print_summary(const StudyAnalysis& a) {
 }
 
 int run(const StudyReportOptions& o) {
-  const records::LearnerStore store(records::data_dir_of_store(o.store), records::StoreOptions{.read_only = true});
+  const auto opened = records::open_record_store(o.store, records::StoreOptions{.read_only = true});
+  const records::RecordStore& store = *opened;
   const std::string db = store.database_path().string();
   const auto study = store.study(o.study);
   if (!study) throw InputError(db, "has no study \"" + o.study + "\"");
@@ -129,9 +129,9 @@ int run(const StudyReportOptions& o) {
 
 CommandRunner setup_study_report(CLI::App& sub) {
   auto o = std::make_shared<StudyReportOptions>();
-  sub.add_option(
-      "--store", o->store,
-      "Data directory or its skillcoach.db (default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
+  sub.add_option("--store", o->store,
+                 "Data directory, its skillcoach.db, or a postgresql:// URL (a shared server; see docs/database.md) "
+                 "(default: $XDG_DATA_HOME/skillcoach or ~/.local/share/skillcoach)");
   sub.add_option("--study", o->study, "The study")->required();
   sub.add_option("--out", o->out, "Folder to write the report into (created)")->required();
   sub.add_option("--pairs", o->pairs, "paper: the paper's pairs present in the study (default); all: every pair")

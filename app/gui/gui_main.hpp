@@ -8,6 +8,7 @@ namespace sc {
 
 struct GuiOptions {
   std::string data_dir;  // empty: $XDG_DATA_HOME/skillcoach (or ~/.local/share/skillcoach)
+  std::string store;     // non-empty: a class's postgresql:// URL (docs/database.md); data_dir keeps the spill
   std::string script;    // an input script (input_script.hpp) replaces the devices: end-to-end tests
 };
 

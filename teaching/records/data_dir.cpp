@@ -18,7 +18,8 @@ std::filesystem::path data_dir_from_environment(const char* xdg_data_home, const
 std::filesystem::path data_dir_of_store(const std::string& store) {
   if (store.empty()) return default_data_dir();
   if (store.find("://") != std::string::npos)
-    throw InputError(store, "is a URL; this build reads SQLite stores only (a data directory or its skillcoach.db)");
+    throw InputError(
+        store, "is a URL of an unknown kind (a store is a data directory, its skillcoach.db, or a postgresql:// URL)");
   const std::filesystem::path path(store);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return path;

@@ -2,40 +2,17 @@
 
 #include <sqlite3.h>
 
-#include <cmath>
-
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "teaching/records/database_file_check.hpp"
 #include "teaching/records/record_queries.hpp"
 #include "teaching/records/record_studies.hpp"
+#include "teaching/records/record_validation.hpp"
 #include "teaching/records/record_writes.hpp"
 #include "teaching/records/schema_migrations.hpp"
 #include "teaching/records/sqlite_handle.hpp"
 
 namespace sc::records {
-namespace {
-
-void require_text(std::string_view value, std::string_view what) {
-  if (value.empty()) throw InputError("learner record", std::string(what) + " is empty");
-}
-
-// A name shown on screens and in reports: not blank (tabs and newlines count as blank, which the schema's
-// CHECK on spaces alone let through) and free of control characters.
-void require_learner_name(std::string_view name) {
-  const std::string what = "learner name";
-  require_text(name, what);
-  if (name.find_first_not_of(" \t\n\r\v\f") == std::string_view::npos)
-    throw InputError("learner record", what + " is blank");
-  for (unsigned char c : name)
-    if (c < 0x20 || c == 0x7f) throw InputError("learner record", what + " contains a control character");
-}
-
-void require_json(const std::string& text, std::string_view what) {
-  if (!Json::accept(text)) throw InputError("learner record", std::string(what) + " is not valid JSON");
-}
-
-}  // namespace
 
 template <typename Fn>
 auto LearnerStore::read(Fn&& query) const {
@@ -199,11 +176,7 @@ std::int64_t LearnerStore::ensure_learner(std::string_view name, std::string_vie
 }
 
 std::int64_t LearnerStore::begin_session(const NewSession& session) {
-  require_learner_name(session.learner);
-  require_text(session.task, "task");
-  require_text(session.condition, "condition");
-  require_text(session.started, "session start time");
-  require_json(session.settings_json, "session settings");
+  validate_new_session(session);
   claim_learner(session.learner);
   const auto id = write_now("start a session for \"" + session.learner + "\"", [&](SqliteDb& db) {
     const auto session_id = insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
@@ -216,41 +189,25 @@ std::int64_t LearnerStore::begin_session(const NewSession& session) {
 
 SaveResult LearnerStore::record_trial(const TrialRecord& trial) {
   require_session(trial.session_id);
-  require_text(trial.task, "trial task");
-  require_text(trial.device, "trial device");
-  require_text(trial.started, "trial start time");
-  require_text(trial.finished, "trial end time");
-  require_json(trial.scenario_json, "trial scenario");
-  require_json(trial.trajectory_json, "trial trajectory");
-  if (trial.score && !std::isfinite(*trial.score)) throw InputError("learner record", "trial score is not finite");
-  if (trial.round < 1) throw InputError("learner record", "trial round must be 1 or more");
+  validate_trial(trial);
   return submit(TrialWrite{trial, next_seq(trial.session_id)});
 }
 
 SaveResult LearnerStore::save_diagnosis(const DiagnosisRecord& diagnosis) {
   require_session(diagnosis.session_id);
-  require_json(diagnosis.expertise_json, "diagnosis expertise");
-  require_json(diagnosis.targets_json, "diagnosis targets");
-  require_text(diagnosis.extractor, "diagnosis extractor");
-  require_text(diagnosis.created, "diagnosis time");
+  validate_diagnosis(diagnosis);
   return submit(diagnosis);
 }
 
 SaveResult LearnerStore::save_curriculum(const CurriculumRecord& curriculum) {
   require_session(curriculum.session_id);
-  require_text(curriculum.condition, "curriculum condition");
-  require_json(curriculum.items_json, "curriculum items");
-  require_text(curriculum.created, "curriculum time");
-  for (const auto& drill : curriculum.drills) {
-    require_json(drill.skills_json, "drill skills");
-    require_json(drill.content_json, "drill content");
-  }
+  validate_curriculum(curriculum);
   return submit(curriculum);
 }
 
 SaveResult LearnerStore::save_progress(std::int64_t session_id, const SessionProgress& progress) {
   require_session(session_id);
-  if (progress.round < 1 || progress.item_index < 0) throw InputError("learner record", "invalid session progress");
+  validate_progress(progress);
   return submit(ProgressWrite{session_id, progress});
 }
 
@@ -329,11 +286,7 @@ int LearnerStore::next_seq(std::int64_t session_id) {
       last = query_last_seq(connection(), session_id);
     } catch (const SqliteError&) {  // unreadable now: the pending queue below still orders this session
     }
-    for (const auto& write : pending_) {
-      if (const auto* trial = std::get_if<TrialWrite>(&write); trial && trial->trial.session_id == session_id)
-        last = std::max(last, trial->seq);
-    }
-    it = last_seq_.emplace(session_id, last).first;
+    it = last_seq_.emplace(session_id, last_seq_with_pending(pending_, session_id, last)).first;
   }
   return ++it->second;
 }
@@ -358,19 +311,8 @@ std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_vie
   const auto sessions = read([&](SqliteDb& db) { return query_unfinished_sessions(db, learner, task); });
   for (const auto& row : sessions) {
     ResumePoint point{row, read([&](SqliteDb& db) { return query_trial_count(db, row.id); })};
-    bool finished = false;
     // Writes still pending are part of the learner's work: apply them in order.
-    for (const auto& write : pending_) {
-      if (session_of(write) != row.id) continue;
-      if (const auto* trial = std::get_if<TrialWrite>(&write)) {
-        ++point.trials_done;
-        if (trial->trial.progress_after) point.session.progress = *trial->trial.progress_after;
-      } else if (const auto* progress = std::get_if<ProgressWrite>(&write)) {
-        point.session.progress = progress->progress;
-      } else if (std::holds_alternative<FinishWrite>(write)) {
-        finished = true;
-      }
-    }
+    const bool finished = apply_pending_to_resume(point, pending_);
     if (!finished) return point;
   }
   return std::nullopt;

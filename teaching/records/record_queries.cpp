@@ -9,7 +9,8 @@ constexpr std::string_view kSessionColumns =
     "s.id, l.name, s.task, s.condition, s.seed, s.settings, s.started, s.finished, s.round, s.phase, s.item_index,"
     " (SELECT name FROM studies WHERE id = s.study_id)";
 
-SessionRow read_session(const SqliteStatement& row) {
+template <typename Row>
+SessionRow read_session(const Row& row) {
   SessionRow s;
   s.id = row.column_int(0);
   s.learner = row.column_text(1);
@@ -46,8 +47,8 @@ struct LearnerSessionSummary {
 };
 
 // Sessions matching `where` (may bind ?1 to `text`), oldest first, with their review summaries.
-std::vector<LearnerSessionSummary> query_session_summaries(SqliteDb& db, std::string_view where,
-                                                           std::string_view text = {}) {
+template <typename Db>
+std::vector<LearnerSessionSummary> query_session_summaries(Db& db, std::string_view where, std::string_view text = {}) {
   auto stmt = db.prepare("SELECT " + std::string(kSessionColumns) + std::string(kSummaryColumns) + std::string(where) +
                          " ORDER BY s.started, s.id");
   if (!text.empty()) stmt.bind(1, text);
@@ -66,14 +67,16 @@ std::vector<LearnerSessionSummary> query_session_summaries(SqliteDb& db, std::st
 
 }  // namespace
 
-std::optional<SessionRow> query_session(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+std::optional<SessionRow> query_session(Db& db, std::int64_t session_id) {
   auto stmt = db.prepare(session_select("WHERE s.id = ?1"));
   stmt.bind(1, session_id);
   if (!stmt.step()) return std::nullopt;
   return read_session(stmt);
 }
 
-std::vector<SessionRow> query_unfinished_sessions(SqliteDb& db, std::string_view learner, std::string_view task) {
+template <typename Db>
+std::vector<SessionRow> query_unfinished_sessions(Db& db, std::string_view learner, std::string_view task) {
   auto stmt = db.prepare(session_select(
       "WHERE l.name = ?1 AND (?2 = '' OR s.task = ?2) AND s.finished IS NULL ORDER BY s.started DESC, s.id DESC"));
   stmt.bind(1, learner).bind(2, task);
@@ -82,29 +85,33 @@ std::vector<SessionRow> query_unfinished_sessions(SqliteDb& db, std::string_view
   return out;
 }
 
-int query_session_count(SqliteDb& db, std::string_view learner, std::string_view task) {
+template <typename Db>
+int query_session_count(Db& db, std::string_view learner, std::string_view task) {
   auto stmt = db.prepare(
       "SELECT count(*) FROM sessions s JOIN learners l ON l.id = s.learner_id WHERE l.name = ?1 AND s.task = ?2");
   stmt.bind(1, learner).bind(2, task).step();
   return static_cast<int>(stmt.column_int(0));
 }
 
-int query_trial_count(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+int query_trial_count(Db& db, std::int64_t session_id) {
   auto stmt = db.prepare("SELECT count(*) FROM trials WHERE session_id = ?1");
   stmt.bind(1, session_id).step();
   return static_cast<int>(stmt.column_int(0));
 }
 
-int query_last_seq(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+int query_last_seq(Db& db, std::int64_t session_id) {
   auto stmt = db.prepare("SELECT coalesce(max(seq), 0) FROM trials WHERE session_id = ?1");
   stmt.bind(1, session_id).step();
   return static_cast<int>(stmt.column_int(0));
 }
 
-std::vector<LearnerOverview> query_learners(SqliteDb& db) {
+template <typename Db>
+std::vector<LearnerOverview> query_learners(Db& db) {
   std::vector<LearnerOverview> learners;
   std::map<std::int64_t, std::size_t> by_id;
-  auto list = db.prepare("SELECT id, name, created FROM learners ORDER BY name COLLATE NOCASE, id");
+  auto list = db.prepare("SELECT id, name, created FROM learners ORDER BY lower(name), id");
   while (list.step()) {
     by_id[list.column_int(0)] = learners.size();
     learners.push_back({list.column_int(0), list.column_text(1), list.column_text(2), {}});
@@ -114,7 +121,8 @@ std::vector<LearnerOverview> query_learners(SqliteDb& db) {
   return learners;
 }
 
-std::vector<StoredTrial> query_trials(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+std::vector<StoredTrial> query_trials(Db& db, std::int64_t session_id) {
   auto stmt = db.prepare(
       "SELECT id, seq, kind, round, drill_index, task, scenario, trajectory, score, device, started, finished"
       " FROM trials WHERE session_id = ?1 ORDER BY seq");
@@ -141,7 +149,8 @@ std::vector<StoredTrial> query_trials(SqliteDb& db, std::int64_t session_id) {
   return out;
 }
 
-std::vector<DiagnosisRecord> query_diagnoses(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+std::vector<DiagnosisRecord> query_diagnoses(Db& db, std::int64_t session_id) {
   auto stmt = db.prepare(
       "SELECT round, expertise, targets, extractor, model_id, created FROM diagnoses WHERE session_id = ?1"
       " ORDER BY round");
@@ -154,7 +163,8 @@ std::vector<DiagnosisRecord> query_diagnoses(SqliteDb& db, std::int64_t session_
   return out;
 }
 
-std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session_id) {
+template <typename Db>
+std::vector<CurriculumRecord> query_curricula(Db& db, std::int64_t session_id) {
   auto stmt =
       db.prepare("SELECT id, round, condition, items, created FROM curricula WHERE session_id = ?1 ORDER BY round");
   stmt.bind(1, session_id);
@@ -173,11 +183,35 @@ std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session
   return out;
 }
 
-std::vector<SessionSummary> query_study_sessions(SqliteDb& db, std::string_view study) {
+template <typename Db>
+std::vector<SessionSummary> query_study_sessions(Db& db, std::string_view study) {
   std::vector<SessionSummary> out;
   for (auto& row : query_session_summaries(db, "WHERE s.study_id = (SELECT id FROM studies WHERE name = ?1)", study))
     out.push_back(std::move(row.summary));
   return out;
 }
+
+// The record SQL runs on both stores (pg_handle.hpp has the same shape as sqlite_handle.hpp).
+template std::optional<SessionRow> query_session(SqliteDb& db, std::int64_t session_id);
+template std::vector<SessionRow> query_unfinished_sessions(SqliteDb& db, std::string_view learner,
+                                                           std::string_view task);
+template int query_session_count(SqliteDb& db, std::string_view learner, std::string_view task);
+template int query_trial_count(SqliteDb& db, std::int64_t session_id);
+template int query_last_seq(SqliteDb& db, std::int64_t session_id);
+template std::vector<LearnerOverview> query_learners(SqliteDb& db);
+template std::vector<SessionSummary> query_study_sessions(SqliteDb& db, std::string_view study);
+template std::vector<StoredTrial> query_trials(SqliteDb& db, std::int64_t session_id);
+template std::vector<DiagnosisRecord> query_diagnoses(SqliteDb& db, std::int64_t session_id);
+template std::vector<CurriculumRecord> query_curricula(SqliteDb& db, std::int64_t session_id);
+template std::optional<SessionRow> query_session(PgDb& db, std::int64_t session_id);
+template std::vector<SessionRow> query_unfinished_sessions(PgDb& db, std::string_view learner, std::string_view task);
+template int query_session_count(PgDb& db, std::string_view learner, std::string_view task);
+template int query_trial_count(PgDb& db, std::int64_t session_id);
+template int query_last_seq(PgDb& db, std::int64_t session_id);
+template std::vector<LearnerOverview> query_learners(PgDb& db);
+template std::vector<SessionSummary> query_study_sessions(PgDb& db, std::string_view study);
+template std::vector<StoredTrial> query_trials(PgDb& db, std::int64_t session_id);
+template std::vector<DiagnosisRecord> query_diagnoses(PgDb& db, std::int64_t session_id);
+template std::vector<CurriculumRecord> query_curricula(PgDb& db, std::int64_t session_id);
 
 }  // namespace sc::records

@@ -10,7 +10,8 @@ namespace {
 
 constexpr std::string_view kStudyColumns = "name, task, conditions, target_per_condition, seed, created";
 
-StudyDefinition read_study(const SqliteStatement& row) {
+template <typename Row>
+StudyDefinition read_study(const Row& row) {
   StudyDefinition study;
   study.name = row.column_text(0);
   study.task = row.column_text(1);
@@ -26,11 +27,13 @@ constexpr std::string_view kParticipantSelect =
     "SELECT l.name, p.seq, p.condition, p.enrolled FROM study_participants p JOIN learners l ON l.id = p.learner_id"
     " WHERE p.study_id = (SELECT id FROM studies WHERE name = ?1)";
 
-StudyParticipant read_participant(const SqliteStatement& row) {
+template <typename Row>
+StudyParticipant read_participant(const Row& row) {
   return {row.column_text(0), static_cast<int>(row.column_int(1)), row.column_text(2), row.column_text(3)};
 }
 
-StudyDefinition require_study(SqliteDb& db, std::string_view name) {
+template <typename Db>
+StudyDefinition require_study(Db& db, std::string_view name) {
   auto study = query_study(db, name);
   if (!study) throw InputError("study \"" + std::string(name) + "\"", "no such study in this database");
   return *study;
@@ -57,7 +60,8 @@ void validate_study(const StudyDefinition& study) {
     throw InputError(where, "participants per condition must be between 1 and 10000");
 }
 
-void insert_study(SqliteDb& db, const StudyDefinition& study) {
+template <typename Db>
+void insert_study(Db& db, const StudyDefinition& study) {
   if (query_study(db, study.name))
     throw InputError("study \"" + study.name + "\"", "already exists in this database; choose another name");
   db.prepare("INSERT INTO studies(" + std::string(kStudyColumns) + ") VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
@@ -70,21 +74,24 @@ void insert_study(SqliteDb& db, const StudyDefinition& study) {
       .run();
 }
 
-std::optional<StudyDefinition> query_study(SqliteDb& db, std::string_view name) {
+template <typename Db>
+std::optional<StudyDefinition> query_study(Db& db, std::string_view name) {
   auto stmt = db.prepare("SELECT " + std::string(kStudyColumns) + " FROM studies WHERE name = ?1");
   stmt.bind(1, name);
   if (!stmt.step()) return std::nullopt;
   return read_study(stmt);
 }
 
-std::vector<StudyDefinition> query_studies(SqliteDb& db) {
+template <typename Db>
+std::vector<StudyDefinition> query_studies(Db& db) {
   auto stmt = db.prepare("SELECT " + std::string(kStudyColumns) + " FROM studies ORDER BY name");
   std::vector<StudyDefinition> out;
   while (stmt.step()) out.push_back(read_study(stmt));
   return out;
 }
 
-std::vector<StudyParticipant> query_participants(SqliteDb& db, std::string_view study) {
+template <typename Db>
+std::vector<StudyParticipant> query_participants(Db& db, std::string_view study) {
   auto stmt = db.prepare(std::string(kParticipantSelect) + " ORDER BY p.seq");
   stmt.bind(1, study);
   std::vector<StudyParticipant> out;
@@ -92,14 +99,16 @@ std::vector<StudyParticipant> query_participants(SqliteDb& db, std::string_view 
   return out;
 }
 
-std::optional<StudyParticipant> query_participant(SqliteDb& db, std::string_view study, std::string_view learner) {
+template <typename Db>
+std::optional<StudyParticipant> query_participant(Db& db, std::string_view study, std::string_view learner) {
   auto stmt = db.prepare(std::string(kParticipantSelect) + " AND l.name = ?2");
   stmt.bind(1, study).bind(2, learner);
   if (!stmt.step()) return std::nullopt;
   return read_participant(stmt);
 }
 
-StudyParticipant enrol_participant(SqliteDb& db, std::string_view study_name, std::string_view learner,
+template <typename Db>
+StudyParticipant enrol_participant(Db& db, std::string_view study_name, std::string_view learner,
                                    std::string_view enrolled) {
   const StudyDefinition study = require_study(db, study_name);
   if (auto existing = query_participant(db, study_name, learner)) return *existing;
@@ -130,7 +139,8 @@ StudyParticipant enrol_participant(SqliteDb& db, std::string_view study_name, st
   return participant;
 }
 
-void attach_session_to_study(SqliteDb& db, std::int64_t session_id, const NewSession& session) {
+template <typename Db>
+void attach_session_to_study(Db& db, std::int64_t session_id, const NewSession& session) {
   const StudyDefinition study = require_study(db, session.study);
   const std::string where = "study \"" + study.name + "\"";
   const auto participant = query_participant(db, study.name, session.learner);
@@ -155,5 +165,24 @@ std::vector<ConditionEnrolment> enrolment_by_condition(const StudyDefinition& st
   }
   return out;
 }
+
+// The record SQL runs on both stores (pg_handle.hpp has the same shape as sqlite_handle.hpp).
+template void insert_study(SqliteDb& db, const StudyDefinition& study);
+template std::optional<StudyDefinition> query_study(SqliteDb& db, std::string_view name);
+template std::vector<StudyDefinition> query_studies(SqliteDb& db);
+template std::vector<StudyParticipant> query_participants(SqliteDb& db, std::string_view study);
+template std::optional<StudyParticipant> query_participant(SqliteDb& db, std::string_view study,
+                                                           std::string_view learner);
+template StudyParticipant enrol_participant(SqliteDb& db, std::string_view study, std::string_view learner,
+                                            std::string_view enrolled);
+template void attach_session_to_study(SqliteDb& db, std::int64_t session_id, const NewSession& session);
+template void insert_study(PgDb& db, const StudyDefinition& study);
+template std::optional<StudyDefinition> query_study(PgDb& db, std::string_view name);
+template std::vector<StudyDefinition> query_studies(PgDb& db);
+template std::vector<StudyParticipant> query_participants(PgDb& db, std::string_view study);
+template std::optional<StudyParticipant> query_participant(PgDb& db, std::string_view study, std::string_view learner);
+template StudyParticipant enrol_participant(PgDb& db, std::string_view study, std::string_view learner,
+                                            std::string_view enrolled);
+template void attach_session_to_study(PgDb& db, std::int64_t session_id, const NewSession& session);
 
 }  // namespace sc::records

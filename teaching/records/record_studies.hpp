@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "teaching/records/pg_handle.hpp"
 #include "teaching/records/record_types.hpp"
 #include "teaching/records/sqlite_handle.hpp"
 #include "teaching/records/study_records.hpp"
@@ -16,19 +17,25 @@ namespace sc::records {
 // participants per condition; sc::InputError otherwise.
 void validate_study(const StudyDefinition& study);
 // Throws sc::InputError when a study of that name exists.
-void insert_study(SqliteDb& db, const StudyDefinition& study);
-std::optional<StudyDefinition> query_study(SqliteDb& db, std::string_view name);
-std::vector<StudyDefinition> query_studies(SqliteDb& db);                                // by name
-std::vector<StudyParticipant> query_participants(SqliteDb& db, std::string_view study);  // by seq
-std::optional<StudyParticipant> query_participant(SqliteDb& db, std::string_view study, std::string_view learner);
+template <typename Db>
+void insert_study(Db& db, const StudyDefinition& study);
+template <typename Db>
+std::optional<StudyDefinition> query_study(Db& db, std::string_view name);
+template <typename Db>
+std::vector<StudyDefinition> query_studies(Db& db);  // by name
+template <typename Db>
+std::vector<StudyParticipant> query_participants(Db& db, std::string_view study);  // by seq
+template <typename Db>
+std::optional<StudyParticipant> query_participant(Db& db, std::string_view study, std::string_view learner);
 // Enrols `learner` (created if new) as the next participant with the next condition of the study's
 // assignment sequence; an enrolled learner keeps their place. Throws sc::InputError for an unknown or full
 // study.
-StudyParticipant enrol_participant(SqliteDb& db, std::string_view study, std::string_view learner,
-                                   std::string_view enrolled);
+template <typename Db>
+StudyParticipant enrol_participant(Db& db, std::string_view study, std::string_view learner, std::string_view enrolled);
 // Sets the new session's study; throws sc::InputError unless the learner is enrolled in it and the
 // session's task and condition are the study's task and the learner's assigned condition.
-void attach_session_to_study(SqliteDb& db, std::int64_t session_id, const NewSession& session);
+template <typename Db>
+void attach_session_to_study(Db& db, std::int64_t session_id, const NewSession& session);
 
 // Enrolment per condition of `participants` against the study's target, in the study's condition order.
 std::vector<ConditionEnrolment> enrolment_by_condition(const StudyDefinition& study,

@@ -1,13 +1,12 @@
 #include "teaching/records/record_writes.hpp"
 
-#include <sqlite3.h>
-
 #include <string>
 
 namespace sc::records {
 namespace {
 
-void update_progress(SqliteDb& db, std::int64_t session_id, const SessionProgress& progress) {
+template <typename Db>
+void update_progress(Db& db, std::int64_t session_id, const SessionProgress& progress) {
   db.prepare("UPDATE sessions SET round = ?1, phase = ?2, item_index = ?3 WHERE id = ?4")
       .bind(1, std::int64_t{progress.round})
       .bind(2, to_string(progress.phase))
@@ -19,20 +18,21 @@ void update_progress(SqliteDb& db, std::int64_t session_id, const SessionProgres
 // The seq is taken: a replay of this very trial (the spill file of a store whose commit did land) is fine;
 // another trial under that number means a second trainer wrote to the session, and merging the two
 // silently would lose one of them, so the write fails and stays pending.
-void require_same_trial(SqliteDb& db, const TrialWrite& write) {
+template <typename Db>
+void require_same_trial(Db& db, const TrialWrite& write) {
   auto existing = db.prepare("SELECT started, trajectory FROM trials WHERE session_id = ?1 AND seq = ?2");
   existing.bind(1, write.trial.session_id).bind(2, std::int64_t{write.seq});
   const bool same = existing.step() && existing.column_text(0) == write.trial.started &&
                     existing.column_text(1) == write.trial.trajectory_json;
   existing.run();
   if (!same) {
-    throw SqliteError(SQLITE_CONSTRAINT_UNIQUE,
-                      "trial " + std::to_string(write.seq) + " of session " + std::to_string(write.trial.session_id) +
-                          " is already a different trial (another trainer wrote to this session)");
+    db.fail_conflict("trial " + std::to_string(write.seq) + " of session " + std::to_string(write.trial.session_id) +
+                     " is already a different trial (another trainer wrote to this session)");
   }
 }
 
-void insert_trial(SqliteDb& db, const TrialWrite& write) {
+template <typename Db>
+void insert_trial(Db& db, const TrialWrite& write) {
   const TrialRecord& t = write.trial;
   db.prepare(
         "INSERT INTO trials(session_id, seq, kind, round, drill_index, task, scenario, trajectory, score, device,"
@@ -51,11 +51,12 @@ void insert_trial(SqliteDb& db, const TrialWrite& write) {
       .bind(11, t.started)
       .bind(12, t.finished)
       .run();
-  if (sqlite3_changes(db.raw()) == 0) require_same_trial(db, write);
+  if (db.changes() == 0) require_same_trial(db, write);
   if (t.progress_after) update_progress(db, t.session_id, *t.progress_after);
 }
 
-void upsert_diagnosis(SqliteDb& db, const DiagnosisRecord& d) {
+template <typename Db>
+void upsert_diagnosis(Db& db, const DiagnosisRecord& d) {
   db.prepare(
         "INSERT INTO diagnoses(session_id, round, expertise, targets, extractor, model_id, created)"
         " VALUES(?1, ?2, ?3, ?4, ?5, ?6, ?7) ON CONFLICT(session_id, round) DO UPDATE SET"
@@ -71,7 +72,8 @@ void upsert_diagnosis(SqliteDb& db, const DiagnosisRecord& d) {
       .run();
 }
 
-void upsert_curriculum(SqliteDb& db, const CurriculumRecord& c) {
+template <typename Db>
+void upsert_curriculum(Db& db, const CurriculumRecord& c) {
   auto upsert = db.prepare(
       "INSERT INTO curricula(session_id, round, condition, items, created) VALUES(?1, ?2, ?3, ?4, ?5)"
       " ON CONFLICT(session_id, round) DO UPDATE SET condition = excluded.condition, items = excluded.items,"
@@ -91,7 +93,8 @@ void upsert_curriculum(SqliteDb& db, const CurriculumRecord& c) {
 
 }  // namespace
 
-std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::string_view created) {
+template <typename Db>
+std::int64_t insert_learner_if_new(Db& db, std::string_view name, std::string_view created) {
   db.prepare("INSERT INTO learners(name, created) VALUES(?1, ?2) ON CONFLICT(name) DO NOTHING")
       .bind(1, name)
       .bind(2, created)
@@ -102,20 +105,25 @@ std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::str
   return select.column_int(0);
 }
 
-std::int64_t insert_session(SqliteDb& db, std::int64_t learner_id, const NewSession& s) {
-  db.prepare(
-        "INSERT INTO sessions(learner_id, task, condition, seed, settings, started) VALUES(?1, ?2, ?3, ?4, ?5, ?6)")
-      .bind(1, learner_id)
+template <typename Db>
+std::int64_t insert_session(Db& db, std::int64_t learner_id, const NewSession& s) {
+  auto insert = db.prepare(
+      "INSERT INTO sessions(learner_id, task, condition, seed, settings, started) VALUES(?1, ?2, ?3, ?4, ?5, ?6)"
+      " RETURNING id");
+  insert.bind(1, learner_id)
       .bind(2, s.task)
       .bind(3, s.condition)
       .bind(4, static_cast<std::int64_t>(s.seed))  // bit pattern kept; read back as unsigned
       .bind(5, s.settings_json)
       .bind(6, s.started)
-      .run();
-  return db.last_insert_id();
+      .step();
+  const std::int64_t id = insert.column_int(0);
+  insert.run();  // finish the statement
+  return id;
 }
 
-void apply_write(SqliteDb& db, const PendingWrite& write) {
+template <typename Db>
+void apply_write(Db& db, const PendingWrite& write) {
   std::visit(
       [&db](const auto& w) {
         using T = std::decay_t<decltype(w)>;
@@ -128,5 +136,13 @@ void apply_write(SqliteDb& db, const PendingWrite& write) {
       },
       write);
 }
+
+// The record SQL runs on both stores (pg_handle.hpp has the same shape as sqlite_handle.hpp).
+template std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::string_view created);
+template std::int64_t insert_session(SqliteDb& db, std::int64_t learner_id, const NewSession& session);
+template void apply_write(SqliteDb& db, const PendingWrite& write);
+template std::int64_t insert_learner_if_new(PgDb& db, std::string_view name, std::string_view created);
+template std::int64_t insert_session(PgDb& db, std::int64_t learner_id, const NewSession& session);
+template void apply_write(PgDb& db, const PendingWrite& write);
 
 }  // namespace sc::records

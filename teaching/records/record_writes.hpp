@@ -8,12 +8,16 @@
 #include <string_view>
 
 #include "teaching/records/pending_writes.hpp"
+#include "teaching/records/pg_handle.hpp"
 #include "teaching/records/sqlite_handle.hpp"
 
 namespace sc::records {
 
-std::int64_t insert_learner_if_new(SqliteDb& db, std::string_view name, std::string_view created);
-std::int64_t insert_session(SqliteDb& db, std::int64_t learner_id, const NewSession& session);
-void apply_write(SqliteDb& db, const PendingWrite& write);
+template <typename Db>
+std::int64_t insert_learner_if_new(Db& db, std::string_view name, std::string_view created);
+template <typename Db>
+std::int64_t insert_session(Db& db, std::int64_t learner_id, const NewSession& session);
+template <typename Db>
+void apply_write(Db& db, const PendingWrite& write);
 
 }  // namespace sc::records

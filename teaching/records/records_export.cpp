@@ -12,7 +12,7 @@ Json optional_number(const std::optional<double>& value) { return value ? Json(*
 // `problems`, so one bad row never costs the learner the export of everything else.
 class SessionExporter {
  public:
-  SessionExporter(const LearnerStore& store, RecordsExport& out) : store_(store), out_(out) {}
+  SessionExporter(const RecordStore& store, RecordsExport& out) : store_(store), out_(out) {}
 
   Json session(const SessionSummary& summary) {
     const auto id = summary.session.id;
@@ -52,13 +52,13 @@ class SessionExporter {
     }
   }
 
-  const LearnerStore& store_;
+  const RecordStore& store_;
   RecordsExport& out_;
 };
 
 }  // namespace
 
-RecordsExport export_records(const LearnerStore& store) {
+RecordsExport export_records(const RecordStore& store) {
   RecordsExport out;
   SessionExporter exporter(store, out);
   Json learners = Json::array();
@@ -93,7 +93,7 @@ namespace {
 
 // `--out` naming the database or one of its companion files would replace the learner's records by the
 // export: refused before anything is written.
-void refuse_database_as_output(const LearnerStore& store, const std::filesystem::path& out) {
+void refuse_database_as_output(const RecordStore& store, const std::filesystem::path& out) {
   const auto& db = store.database_path();
   for (const auto& file : {db, std::filesystem::path(db.string() + "-wal"), std::filesystem::path(db.string() + "-shm"),
                            store.spill_path()}) {
@@ -109,7 +109,10 @@ void refuse_database_as_output(const LearnerStore& store, const std::filesystem:
 }  // namespace
 
 RecordsExport export_database(const std::filesystem::path& data_dir, const std::filesystem::path& out) {
-  const LearnerStore store(data_dir, StoreOptions{.read_only = true});
+  return export_store(LearnerStore(data_dir, StoreOptions{.read_only = true}), out);
+}
+
+RecordsExport export_store(const RecordStore& store, const std::filesystem::path& out) {
   refuse_database_as_output(store, out);
   RecordsExport result = export_records(store);
   write_json_file(out, result.doc, 1);

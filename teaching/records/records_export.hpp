@@ -21,10 +21,12 @@ struct RecordsExport {
 };
 
 // Every readable record; rows whose stored JSON is damaged are left out and listed in `problems`.
-RecordsExport export_records(const LearnerStore& store);
+RecordsExport export_records(const RecordStore& store);
 
 // Opens `data_dir` read-only and writes the export to `out` atomically; throws sc::InputError (missing,
 // damaged, foreign or newer database; unwritable output).
 RecordsExport export_database(const std::filesystem::path& data_dir, const std::filesystem::path& out);
+// The same from any opened store (a PostgreSQL one included).
+RecordsExport export_store(const RecordStore& store, const std::filesystem::path& out);
 
 }  // namespace sc::records

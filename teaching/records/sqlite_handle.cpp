@@ -142,6 +142,10 @@ bool SqliteDb::is_read_only() const { return sqlite3_db_readonly(db_, "main") ==
 
 std::int64_t SqliteDb::last_insert_id() const { return sqlite3_last_insert_rowid(db_); }
 
+std::int64_t SqliteDb::changes() const { return sqlite3_changes64(db_); }
+
+void SqliteDb::fail_conflict(const std::string& message) const { throw SqliteError(SQLITE_CONSTRAINT_UNIQUE, message); }
+
 void SqliteDb::set_busy_timeout(int milliseconds) { sqlite3_busy_timeout(db_, milliseconds); }
 
 SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }

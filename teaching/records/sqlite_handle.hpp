@@ -74,6 +74,9 @@ class SqliteDb {
 
   bool is_read_only() const;
   std::int64_t last_insert_id() const;
+  std::int64_t changes() const;  // rows changed by the last statement
+  // The unique-key conflict of a replayed write: throws SqliteError(SQLITE_CONSTRAINT_UNIQUE).
+  [[noreturn]] void fail_conflict(const std::string& message) const;
   void set_busy_timeout(int milliseconds);
   sqlite3* raw() { return db_; }
 

@@ -24,7 +24,7 @@ const records::CurriculumRecord* SessionRecord::curriculum(int round) const {
   return nullptr;
 }
 
-SessionRecord load_session_record(const records::LearnerStore& store, std::int64_t session_id) {
+SessionRecord load_session_record(const records::RecordStore& store, std::int64_t session_id) {
   auto session = store.session(session_id);
   if (!session) throw InputError(store.database_path().string(), "has no session " + std::to_string(session_id));
   SessionRecord record;
@@ -35,7 +35,7 @@ SessionRecord load_session_record(const records::LearnerStore& store, std::int64
   return record;
 }
 
-std::vector<std::int64_t> learner_session_ids(const records::LearnerStore& store, std::string_view learner) {
+std::vector<std::int64_t> learner_session_ids(const records::RecordStore& store, std::string_view learner) {
   // A few names help with a typo; the whole list of a big class would make a 10 kB error line.
   constexpr std::size_t kNamesShown = 5;
   std::string names;

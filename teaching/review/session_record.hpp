@@ -23,10 +23,10 @@ struct SessionRecord {
 };
 
 // Throws InputError naming the database for an unknown session id.
-SessionRecord load_session_record(const records::LearnerStore& store, std::int64_t session_id);
+SessionRecord load_session_record(const records::RecordStore& store, std::int64_t session_id);
 
 // The ids of a learner's sessions (oldest first); throws InputError naming the database for an unknown
 // learner, listing the learners it does hold.
-std::vector<std::int64_t> learner_session_ids(const records::LearnerStore& store, std::string_view learner);
+std::vector<std::int64_t> learner_session_ids(const records::RecordStore& store, std::string_view learner);
 
 }  // namespace sc::review

@@ -33,10 +33,10 @@ const char* phase_words(SessionPhase phase) {
 
 }  // namespace
 
-TrainingSession::TrainingSession(const TaskKit& kit, records::LearnerStore& store, TimestampSource now)
+TrainingSession::TrainingSession(const TaskKit& kit, records::RecordStore& store, TimestampSource now)
     : kit_(kit), store_(store), now_(std::move(now)) {}
 
-TrainingSession::TrainingSession(const TaskKit& kit, records::LearnerStore& store, SessionSettings settings,
+TrainingSession::TrainingSession(const TaskKit& kit, records::RecordStore& store, SessionSettings settings,
                                  TimestampSource now)
     : TrainingSession(kit, store, std::move(now)) {
   settings.validate();

@@ -8,7 +8,7 @@
 //                           may precede each, and the learner may add extra attempts ("try again").
 //   Evaluation              fresh scenarios (never the pre-test's), no ghost.
 //   Summary                 pre-test vs evaluation; Adaptive offers another round (back to Diagnosis).
-// Every trial is committed to the LearnerStore the moment it is submitted, together with the point to
+// Every trial is committed to the record store the moment it is submitted, together with the point to
 // resume from (progress_after), so a crash loses at most the trial being played; resume() rebuilds the
 // session from the database (everything else is recomputed deterministically from the seed).
 #include <cstdint>
@@ -50,11 +50,11 @@ class TrainingSession {
  public:
   // Creates the learner (if new) and the session in `store`. Throws InputError for bad settings, an empty
   // expert pool or a store that cannot create the session.
-  TrainingSession(const TaskKit& kit, records::LearnerStore& store, SessionSettings settings, TimestampSource now);
+  TrainingSession(const TaskKit& kit, records::RecordStore& store, SessionSettings settings, TimestampSource now);
 
   // Rebuilds the unfinished session `point` (from store.find_unfinished_session) where it stopped.
   // Throws InputError when the stored session belongs to another task or its trials do not fit.
-  static std::unique_ptr<TrainingSession> resume(const TaskKit& kit, records::LearnerStore& store,
+  static std::unique_ptr<TrainingSession> resume(const TaskKit& kit, records::RecordStore& store,
                                                  const records::ResumePoint& point, TimestampSource now);
 
   std::int64_t session_id() const { return session_id_; }
@@ -119,7 +119,7 @@ class TrainingSession {
     std::vector<Json> eval;
     bool analysed = false;
   };
-  TrainingSession(const TaskKit& kit, records::LearnerStore& store, TimestampSource now);
+  TrainingSession(const TaskKit& kit, records::RecordStore& store, TimestampSource now);
 
   void select_pretest();
   CurriculumInputs curriculum_inputs() const;
@@ -137,7 +137,7 @@ class TrainingSession {
   void require_phase(SessionPhase phase, const char* what) const;
 
   const TaskKit& kit_;
-  records::LearnerStore& store_;
+  records::RecordStore& store_;
   TimestampSource now_;
   SessionSettings settings_;
   std::int64_t session_id_ = 0;

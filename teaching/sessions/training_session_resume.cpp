@@ -6,7 +6,7 @@
 
 namespace sc {
 
-std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, records::LearnerStore& store,
+std::unique_ptr<TrainingSession> TrainingSession::resume(const TaskKit& kit, records::RecordStore& store,
                                                          const records::ResumePoint& point, TimestampSource now) {
   const records::SessionRow& row = point.session;
   const std::string where = "session " + std::to_string(row.id);

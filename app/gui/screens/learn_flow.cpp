@@ -7,6 +7,7 @@
 #include "app/core/learn_scripted_learner.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
+#include "teaching/records/open_record_store.hpp"
 
 namespace sc {
 namespace {
@@ -18,12 +19,13 @@ TimestampSource clock_of(const LearnFlow& flow) {
 
 }  // namespace
 
-records::LearnerStore& LearnFlow::store(const AppServices& services) {
+records::RecordStore& LearnFlow::store(const AppServices& services) {
   if (!store_) {
     const std::filesystem::path dir = services.options.data_dir.empty()
                                           ? records::default_data_dir()
                                           : std::filesystem::path(services.options.data_dir);
-    store_ = std::make_unique<records::LearnerStore>(dir);
+    store_ = services.options.store.empty() ? std::make_unique<records::LearnerStore>(dir)
+                                            : records::open_record_store(services.options.store, {}, dir);
   }
   return *store_;
 }
@@ -34,7 +36,7 @@ std::optional<records::ResumePoint> LearnFlow::unfinished(const AppServices& ser
 }
 
 void LearnFlow::start(const AppServices& services, bool resume) {
-  records::LearnerStore& db = store(services);
+  records::RecordStore& db = store(services);
   if (resume) {
     if (const auto point = unfinished(services)) {
       session_ = TrainingSession::resume(kits_.kit_of(point->session), db, *point, clock_of(*this));
@@ -56,7 +58,7 @@ void LearnFlow::start(const AppServices& services, bool resume) {
 }
 
 // One session per participant: a finished one ends the study for them (an unfinished one resumes above).
-void LearnFlow::join_study(records::LearnerStore& db, const std::string& task, SessionSettings& settings) const {
+void LearnFlow::join_study(records::RecordStore& db, const std::string& task, SessionSettings& settings) const {
   for (const auto& s : db.study_sessions(study))
     if (s.session.learner == learner)
       throw InputError(learner, "already has a session in study \"" + study + "\" (session " +

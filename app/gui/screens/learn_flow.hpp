@@ -33,7 +33,7 @@ class LearnFlow {
   int drills_per_weak_skill = SessionSettings{}.drills_per_weak_skill;  // ... this many unique drills each
   std::string message;  // last problem to show (one line), empty if none
 
-  records::LearnerStore& store(const AppServices& services);
+  records::RecordStore& store(const AppServices& services);
   TrainingSession* session() { return session_.get(); }
 
   // Starts a new session, or resumes the learner's unfinished one of this task when `resume` is set.
@@ -50,10 +50,10 @@ class LearnFlow {
   ~LearnFlow();
 
  private:
-  void join_study(records::LearnerStore& db, const std::string& task, SessionSettings& settings) const;
+  void join_study(records::RecordStore& db, const std::string& task, SessionSettings& settings) const;
 
   TaskKitCache kits_;  // built on first use (parking segments its pool once per lot)
-  std::unique_ptr<records::LearnerStore> store_;
+  std::unique_ptr<records::RecordStore> store_;
   std::unique_ptr<TrainingSession> session_;
 };
 

@@ -3,6 +3,7 @@
 #include "app/gui/screens/learn_flow.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/records/data_dir.hpp"
+#include "teaching/records/open_record_store.hpp"
 #include "teaching/review/practice_rounds.hpp"
 
 namespace sc {
@@ -21,7 +22,9 @@ void ReviewModel::reload() {
     const std::filesystem::path dir = services_.options.data_dir.empty()
                                           ? records::default_data_dir()
                                           : std::filesystem::path(services_.options.data_dir);
-    store_ = std::make_unique<records::LearnerStore>(dir, records::StoreOptions{.read_only = true});
+    const records::StoreOptions read_only{.read_only = true};
+    store_ = services_.options.store.empty() ? std::make_unique<records::LearnerStore>(dir, read_only)
+                                             : records::open_record_store(services_.options.store, read_only);
     rows_ = review::session_rows(store_->list_learners());
     message.clear();
   } catch (const InputError& e) {

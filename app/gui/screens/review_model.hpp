@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/gui/app_services.hpp"
 #include "app/core/review_pictures.hpp"
+#include "app/gui/app_services.hpp"
 #include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/review_playback.hpp"
 #include "teaching/review/session_rows.hpp"
@@ -52,7 +52,7 @@ class ReviewModel {
   const std::vector<review::TrialReview>& test_trials();
 
   AppServices& services_;
-  std::unique_ptr<records::LearnerStore> store_;
+  std::unique_ptr<records::RecordStore> store_;
   std::vector<review::SessionListRow> rows_;
   TaskKitCache kits_;
   std::unique_ptr<review::SessionReview> session_;

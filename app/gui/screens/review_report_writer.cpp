@@ -9,6 +9,7 @@
 #include "app/core/review_pictures.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl_context.hpp"
+#include "teaching/records/open_record_store.hpp"
 #include "teaching/review/review_report.hpp"
 #include "teaching/tasks/task_kit_cache.hpp"
 
@@ -45,7 +46,7 @@ class ReportWriter {
     return *context_;
   }
 
-  review::SessionReport session(const records::LearnerStore& store, const review::SessionListRow& row) {
+  review::SessionReport session(const records::RecordStore& store, const review::SessionListRow& row) {
     review::SessionReport report;
     report.row = row;
     review::SessionRecord record = review::load_session_record(store, row.session_id);
@@ -111,15 +112,33 @@ class ReportWriter {
 
 }  // namespace
 
+namespace {
+
+bool started_within(const review::SessionListRow& row, const ReportRequest& request) {
+  return (request.from.empty() || row.date >= request.from) &&
+         (request.to.empty() || row.date.compare(0, request.to.size(), request.to) <= 0);
+}
+
+std::unique_ptr<records::RecordStore> open_for_report(const ReportRequest& request) {
+  const records::StoreOptions read_only{.read_only = true};
+  if (request.store.empty()) return std::make_unique<records::LearnerStore>(request.data_dir, read_only);
+  return records::open_record_store(request.store, read_only);
+}
+
+}  // namespace
+
 ReportResult write_learner_report(const ReportRequest& request) {
-  const records::LearnerStore store(request.data_dir, records::StoreOptions{.read_only = true});
+  const auto opened = open_for_report(request);
+  const records::RecordStore& store = *opened;
   const std::vector<std::int64_t> ids = review::learner_session_ids(store, request.learner);
   if (request.session && std::find(ids.begin(), ids.end(), *request.session) == ids.end())
     throw InputError(store.database_path().string(),
                      "learner '" + request.learner + "' has no session " + std::to_string(*request.session));
   std::vector<review::SessionListRow> rows;
   for (const auto& row : review::session_rows(store.list_learners()))
-    if (row.learner == request.learner && (!request.session || row.session_id == *request.session)) rows.push_back(row);
+    if (row.learner == request.learner && (!request.session || row.session_id == *request.session) &&
+        started_within(row, request))
+      rows.push_back(row);
 
   std::error_code ec;
   fs::create_directories(request.out, ec);

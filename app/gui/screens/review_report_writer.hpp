@@ -11,8 +11,13 @@ namespace sc {
 
 struct ReportRequest {
   std::filesystem::path data_dir;
+  std::string store;  // non-empty: read this store instead (e.g. a class's postgresql:// URL)
   std::string learner;
   std::optional<std::int64_t> session;  // none: every session of the learner
+  // Sessions started within [from, to]: ISO-8601 prefixes ("2026-12-01", "2026-12-01T14"), compared as text
+  // (stored start times are ISO-8601 UTC); empty: no bound.
+  std::string from;
+  std::string to;
   std::filesystem::path out;
   int image_width = 1280;
   int image_height = 720;
