@@ -62,7 +62,7 @@ StripBoxFigure figure_of(const StudyAnalysis& a) {
   f.notes = {
       "Points: participants. Box: quartiles and median; whiskers: furthest values within 1.5 IQR. "
       "Black: mean +- standard error."};
-  for (const ConditionResult& c : a.conditions) {
+  for (const StudyConditionResult& c : a.conditions) {
     const auto& s = c.improvement;
     f.groups.push_back({c.name, "N = " + std::to_string(s.n) + " of " + std::to_string(c.target),
                         condition_color(c.condition), c.improvements, s.q1, s.median, s.q3, s.whisker_low,
@@ -80,9 +80,9 @@ void print_summary(const StudyAnalysis& a) {
   std::printf("study \"%s\" (%s): %zu enrolled, %d counted\n", a.study.name.c_str(), a.study.task.c_str(),
               a.participants.size(), a.counted());
   std::printf("  %-16s %4s %10s %9s\n", "condition", "N", "mean", "s.e.");
-  for (const ConditionResult& c : a.conditions)
+  for (const StudyConditionResult& c : a.conditions)
     std::printf("  %-16s %4d %+10.4f %9.4f\n", c.name.c_str(), c.improvement.n, c.improvement.mean, c.improvement.se);
-  for (const ConditionComparison& c : a.comparisons) {
+  for (const StudyConditionComparison& c : a.comparisons) {
     const std::string pair = condition_display_name(c.a) + " vs " + condition_display_name(c.b);
     if (!c.test) {
       std::printf("  %-34s not tested (a condition has no counted participant)\n", pair.c_str());

@@ -12,9 +12,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-ConditionResult condition_result(const records::StudyDefinition& study, const std::string& condition,
-                                 const std::vector<ParticipantOutcome>& participants) {
-  ConditionResult r;
+StudyConditionResult condition_result(const records::StudyDefinition& study, const std::string& condition,
+                                      const std::vector<ParticipantOutcome>& participants) {
+  StudyConditionResult r;
   r.condition = condition;
   r.name = condition_display_name(condition);
   r.target = study.target_per_condition;
@@ -33,8 +33,8 @@ ConditionResult condition_result(const records::StudyDefinition& study, const st
   return r;
 }
 
-const ConditionResult& result_of(const std::vector<ConditionResult>& results, const std::string& condition) {
-  for (const ConditionResult& r : results)
+const StudyConditionResult& result_of(const std::vector<StudyConditionResult>& results, const std::string& condition) {
+  for (const StudyConditionResult& r : results)
     if (r.condition == condition) return r;
   throw InputError("study analysis", "no condition \"" + condition + "\"");  // planned pairs come from the study
 }
@@ -43,7 +43,7 @@ const ConditionResult& result_of(const std::vector<ConditionResult>& results, co
 
 int StudyAnalysis::counted() const {
   int n = 0;
-  for (const ConditionResult& c : conditions) n += c.improvement.n;
+  for (const StudyConditionResult& c : conditions) n += c.improvement.n;
   return n;
 }
 
@@ -62,9 +62,9 @@ StudyAnalysis analyse_study(const records::StudyDefinition& study, std::vector<P
     analysis.conditions.push_back(condition_result(study, condition, analysis.participants));
   std::vector<double> p_values;
   for (const auto& [a, b] : planned_comparisons(study.conditions, plan)) {
-    const ConditionResult& ra = result_of(analysis.conditions, a);
-    const ConditionResult& rb = result_of(analysis.conditions, b);
-    ConditionComparison c{a, b, ra.improvement.n, rb.improvement.n, kNaN, std::nullopt, kNaN, false};
+    const StudyConditionResult& ra = result_of(analysis.conditions, a);
+    const StudyConditionResult& rb = result_of(analysis.conditions, b);
+    StudyConditionComparison c{a, b, ra.improvement.n, rb.improvement.n, kNaN, std::nullopt, kNaN, false};
     if (c.n_a > 0 && c.n_b > 0) {
       c.mean_difference = ra.improvement.mean - rb.improvement.mean;
       c.test = stats::mann_whitney_u(ra.improvements, rb.improvements);
@@ -75,7 +75,7 @@ StudyAnalysis analyse_study(const records::StudyDefinition& study, std::vector<P
   // Holm over the tests actually run (a pair without participants is not part of the family).
   const std::vector<double> adjusted = stats::holm_adjusted(p_values);
   std::size_t next = 0;
-  for (ConditionComparison& c : analysis.comparisons) {
+  for (StudyConditionComparison& c : analysis.comparisons) {
     if (!c.test) continue;
     c.p_holm = adjusted[next++];
     c.significant = c.p_holm <= alpha;

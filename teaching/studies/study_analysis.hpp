@@ -15,7 +15,7 @@
 
 namespace sc {
 
-struct ConditionResult {
+struct StudyConditionResult {
   std::string condition;  // key, as stored
   std::string name;       // as the paper prints it ("Time Heuristic")
   int enrolled = 0;
@@ -25,7 +25,7 @@ struct ConditionResult {
   stats::SampleSummary pretest, eval;  // the counted participants' mean pre-test and evaluation rewards
 };
 
-struct ConditionComparison {
+struct StudyConditionComparison {
   std::string a, b;  // condition keys; U is a's
   int n_a = 0, n_b = 0;
   double mean_difference = 0.0;                  // mean improvement of a - of b (NaN when one is empty)
@@ -36,9 +36,9 @@ struct ConditionComparison {
 
 struct StudyAnalysis {
   records::StudyDefinition study;
-  std::vector<ParticipantOutcome> participants;  // enrolment order, counted or not
-  std::vector<ConditionResult> conditions;       // the study's condition order
-  std::vector<ConditionComparison> comparisons;  // planned order
+  std::vector<ParticipantOutcome> participants;       // enrolment order, counted or not
+  std::vector<StudyConditionResult> conditions;       // the study's condition order
+  std::vector<StudyConditionComparison> comparisons;  // planned order
   ComparisonPlan plan = ComparisonPlan::Paper;
   double alpha = 0.05;
   int counted() const;

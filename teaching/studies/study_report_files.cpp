@@ -33,7 +33,7 @@ Json summary_json(const stats::SampleSummary& s) {
           {"max", json_number(s.max)}};
 }
 
-Json comparison_json(const ConditionComparison& c) {
+Json comparison_json(const StudyConditionComparison& c) {
   Json j{{"a", c.a},
          {"b", c.b},
          {"n_a", c.n_a},
@@ -86,7 +86,7 @@ std::string participants_csv(const StudyAnalysis& analysis) {
 std::string conditions_csv(const StudyAnalysis& analysis) {
   std::ostringstream out;
   out << "condition,name,target,enrolled,n,mean_improvement,se,sd,min,q1,median,q3,max,mean_pretest,mean_eval\n";
-  for (const ConditionResult& c : analysis.conditions) {
+  for (const StudyConditionResult& c : analysis.conditions) {
     const auto& s = c.improvement;
     out << review::csv_field(c.condition) << ',' << review::csv_field(c.name) << ',' << c.target << ',' << c.enrolled
         << ',' << s.n << ',' << number(s.mean) << ',' << number(s.se) << ',' << number(s.sd) << ',' << number(s.min)
@@ -99,7 +99,7 @@ std::string conditions_csv(const StudyAnalysis& analysis) {
 std::string comparisons_csv(const StudyAnalysis& analysis) {
   std::ostringstream out;
   out << "a,b,n_a,n_b,mean_difference,u,effect,method,z,p,p_holm,significant\n";
-  for (const ConditionComparison& c : analysis.comparisons) {
+  for (const StudyConditionComparison& c : analysis.comparisons) {
     out << review::csv_field(c.a) << ',' << review::csv_field(c.b) << ',' << c.n_a << ',' << c.n_b << ','
         << number(c.mean_difference) << ',';
     if (c.test) {
@@ -144,7 +144,7 @@ Json study_report_json(const StudyAnalysis& analysis) {
          {"conditions", Json::array()},
          {"comparisons", Json::array()},
          {"participants", Json::array()}};
-  for (const ConditionResult& c : analysis.conditions) {
+  for (const StudyConditionResult& c : analysis.conditions) {
     j["conditions"].push_back({{"condition", c.condition},
                                {"name", c.name},
                                {"target", c.target},
@@ -154,7 +154,7 @@ Json study_report_json(const StudyAnalysis& analysis) {
                                {"pretest_mean", json_number(c.pretest.mean)},
                                {"eval_mean", json_number(c.eval.mean)}});
   }
-  for (const ConditionComparison& c : analysis.comparisons) j["comparisons"].push_back(comparison_json(c));
+  for (const StudyConditionComparison& c : analysis.comparisons) j["comparisons"].push_back(comparison_json(c));
   for (const ParticipantOutcome& p : analysis.participants) j["participants"].push_back(participant_json(p));
   return j;
 }

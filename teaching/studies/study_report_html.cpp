@@ -43,7 +43,7 @@ void definition(std::ostringstream& h, const StudyAnalysis& a) {
 void condition_table(std::ostringstream& h, const StudyAnalysis& a) {
   h << "<h2>Reward improvement per condition</h2>\n<table><tr><th>Condition</th><th>N</th><th>Enrolled / target</th>"
        "<th>Mean &plusmn; s.e.</th><th>SD</th><th>Median [Q1, Q3]</th><th>Pre-test</th><th>Evaluation</th></tr>\n";
-  for (const ConditionResult& c : a.conditions) {
+  for (const StudyConditionResult& c : a.conditions) {
     const auto& s = c.improvement;
     h << "<tr><td>" << html_escape(c.name) << "</td><td class=num>" << s.n << "</td><td class=num>" << c.enrolled
       << " / " << c.target << "</td><td class=num>" << fixed(s.mean) << (std::isfinite(s.se) ? " &plusmn; " : "")
@@ -57,7 +57,7 @@ void condition_table(std::ostringstream& h, const StudyAnalysis& a) {
 void comparison_table(std::ostringstream& h, const StudyAnalysis& a) {
   h << "<h2>Between conditions</h2>\n<table><tr><th>Pair</th><th>N</th><th>Difference of means</th><th>U</th>"
        "<th>P(a &gt; b)</th><th>Method</th><th>p</th><th>p (Holm)</th></tr>\n";
-  for (const ConditionComparison& c : a.comparisons) {
+  for (const StudyConditionComparison& c : a.comparisons) {
     h << "<tr><td>" << html_escape(condition_display_name(c.a)) << " vs " << html_escape(condition_display_name(c.b))
       << "</td><td class=num>" << c.n_a << " / " << c.n_b << "</td><td class=num>" << fixed(c.mean_difference, "%+.4f")
       << "</td>";

@@ -73,7 +73,7 @@ TEST(StudyAnalysis, SimulatedCohortMatchesAnIndependentComputation) {
 
   // Per condition: N, mean, standard error.
   ASSERT_EQ(a.conditions.size(), 3u);
-  for (const ConditionResult& c : a.conditions) {
+  for (const StudyConditionResult& c : a.conditions) {
     const std::vector<double>& values = expected.count(c.condition) ? expected.at(c.condition) : std::vector<double>{};
     ASSERT_EQ(c.improvement.n, static_cast<int>(values.size())) << c.condition;
     ASSERT_GE(values.size(), 2u) << c.condition << ": the cohort should put 2+ counted participants in each";
@@ -91,7 +91,7 @@ TEST(StudyAnalysis, SimulatedCohortMatchesAnIndependentComputation) {
   // The paper's three pairs, U and exact p each, then Holm over the three.
   ASSERT_EQ(a.comparisons.size(), 3u);
   std::vector<double> p;
-  for (const ConditionComparison& c : a.comparisons) {
+  for (const StudyConditionComparison& c : a.comparisons) {
     ASSERT_TRUE(c.test) << c.a << " vs " << c.b;
     const auto& xa = expected.at(c.a);
     const auto& xb = expected.at(c.b);
