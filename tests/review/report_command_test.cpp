@@ -123,6 +123,19 @@ TEST_F(ReportCommand, OneSessionOnly) {
   EXPECT_NE(run.output.find("1 session(s)"), std::string::npos) << run.output;
 }
 
+// The fixture's session started on 2024-05-01: --from/--to are inclusive date prefixes.
+TEST_F(ReportCommand, DateRangeKeepsTheSessionsStartedWithinIt) {
+  const fs::path out = test::scratch_path("review", "report_dates");
+  const std::string base = "report --data-dir " + quoted(fixture.data_dir) + " --learner Ada --out " + quoted(out);
+  fs::remove_all(out);
+  test::CommandResult run = test::run_skillcoach(base + " --from 2024-05-01 --to 2024-05-01");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("1 session(s)"), std::string::npos) << run.output;
+  fs::remove_all(out);
+  run = test::run_skillcoach(base + " --from 2024-05-02");
+  EXPECT_NE(run.output.find("0 session(s)"), std::string::npos) << run.output;
+}
+
 TEST_F(ReportCommand, UnknownLearnerOrSessionIsOneLineAndExitCode2) {
   const fs::path out = test::scratch_path("review", "report_unknown");
   fs::remove_all(out);
