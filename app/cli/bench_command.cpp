@@ -125,9 +125,13 @@ CommandRunner setup_bench(CLI::App& sub) {
   sub.add_option("--filter", options->filter, "Only benchmarks whose name matches this regular expression");
   return [options, out] {
     options->out_given = out->count() > 0;
-    // docs/benchmarks.md is the committed record of full runs; quick figures would silently replace it.
+    // docs/benchmarks.md is the committed record of full runs; quick or partial figures would silently replace it.
     if (options->quick && !options->out_given)
       throw InputError("--quick", "its figures are too rough for docs/benchmarks.md; name a file with --out");
+    if (!options->filter.empty() && !options->out_given)
+      throw InputError("--filter",
+                       "a partial run would replace the full record in docs/benchmarks.md; name a file "
+                       "with --out");
     return run_bench(*options);
   };
 }

@@ -51,4 +51,13 @@ TEST(BenchCommand, FilterMatchingNothingIsAUsageError) {
   EXPECT_FALSE(std::filesystem::exists(output_dir() / "never.md"));
 }
 
+// docs/benchmarks.md keeps full runs only: a quick or filtered run must name its own file.
+TEST(BenchCommand, QuickOrFilteredRunWithoutOutIsRefusedBeforeMeasuring) {
+  const auto log = output_dir() / "bench_command_no_out.log";
+  EXPECT_EQ(run("bench --quick", log), 2);
+  EXPECT_THAT(read(log), HasSubstr("skillcoach: error: --quick: its figures are too rough"));
+  EXPECT_EQ(run("bench --filter 'render/'", log), 2);
+  EXPECT_THAT(read(log), HasSubstr("skillcoach: error: --filter: a partial run would replace the full record"));
+}
+
 }  // namespace
