@@ -69,12 +69,6 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
 
 namespace {
 
-// The step sequence the skill model sees for a learner's trace (as evaluate-skills --robustness builds it).
-StepSequence sampled_steps(const writing::TimedTrace& trace, const std::string& word) {
-  const writing::TimedTrace infilled = writing::infill_trace(trace);
-  return writing_step_sequence(writing::trace_step_data(infilled.points, writing::AlphabetKind::Classic, word));
-}
-
 // Interior boundaries (action indices) of `word`'s points moved to the infilled mouse readings of a sampling:
 // entry k of `lists` is a list of point indices; boundaries that would not stay ascending are dropped.
 std::vector<std::vector<int>> mouse_copy(const WrittenWord& word, std::vector<std::vector<int>> lists, Rng& rng,
@@ -87,7 +81,7 @@ std::vector<std::vector<int>> mouse_copy(const WrittenWord& word, std::vector<st
   marked.symbol_starts = points;
   const SampledTrace sampled = mouse_sampled(marked, MouseSampling{}, rng);
   const std::vector<int> moved = infilled_symbol_starts(sampled.trace, sampled.symbol_starts);
-  steps = sampled_steps(sampled.trace, word.word);
+  steps = writing_step_sequence(sampled.trace, writing::AlphabetKind::Classic, word.word);
   for (auto& list : lists) {
     std::vector<int> out;
     for (int p : list) {

@@ -24,11 +24,6 @@ RealisticHand without_mouse(RealisticHand h) {
   return h;
 }
 
-StepSequence trace_steps(const writing::TimedTrace& trace, const std::string& word) {
-  const writing::TimedTrace infilled = writing::infill_trace(trace);
-  return writing_step_sequence(writing::trace_step_data(infilled.points, writing::AlphabetKind::Classic, word));
-}
-
 // Symbol ranges [starts[k], starts[k + 1]) of a sequence of `length` actions.
 int range_end(const std::vector<int>& starts, std::size_t k, int length) {
   return k + 1 < starts.size() ? starts[k + 1] : length;
@@ -69,7 +64,7 @@ std::vector<WritingRobustnessRow> measure_writing_robustness(const SkillExtracto
   std::vector<StepSequence> gold_steps;
   for (const std::string& w : words) {
     golds.push_back(written_word(glyphs, w));
-    gold_steps.push_back(trace_steps(unsampled(golds.back()).trace, w));
+    gold_steps.push_back(writing_step_sequence(unsampled(golds.back()).trace, writing::AlphabetKind::Classic, w));
   }
   const std::vector<Segmentation> expert = extractor.extract_all(gold_steps);
   const Rng root(seed);
@@ -82,7 +77,7 @@ std::vector<WritingRobustnessRow> measure_writing_robustness(const SkillExtracto
                                      ? realistic_trace(glyphs, words[i], *condition.hand, root.fork(i).next_u64())
                                      : unsampled(golds[i]);
       starts.push_back(infilled_symbol_starts(trace.trace, trace.symbol_starts));
-      demos.push_back({words[i], trace_steps(trace.trace, words[i]),
+      demos.push_back({words[i], writing_step_sequence(trace.trace, writing::AlphabetKind::Classic, words[i]),
                        std::vector<int>(starts.back().begin() + 1, starts.back().end())});
     }
     std::vector<StepSequence> steps;

@@ -14,8 +14,13 @@ StepSequence writing_step_sequence(const writing::WritingStepData& data) {
 }
 
 StepSequence writing_step_sequence(const writing::WritingTrial& trial) {
-  const writing::TimedTrace infilled = writing::infill_trace(trial.trace());
-  return writing_step_sequence(writing::trace_step_data(infilled.points, trial.scenario.alphabet, trial.scenario.word));
+  return writing_step_sequence(trial.trace(), trial.scenario.alphabet, trial.scenario.word);
+}
+
+StepSequence writing_step_sequence(const writing::TimedTrace& trace, writing::AlphabetKind alphabet,
+                                   const std::string& word) {
+  const writing::TimedTrace infilled = writing::infill_trace(trace);
+  return writing_step_sequence(writing::trace_step_data(infilled.points, alphabet, word));
 }
 
 }  // namespace sc
