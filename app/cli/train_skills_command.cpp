@@ -110,7 +110,7 @@ int run(const TrainArgs& args) {
                                                  " has no known boundaries (only generated writing words have them)");
     trainer.fix_boundaries(split.train_boundaries, split.valid_boundaries);
   }
-  if (!split.train_warm_boundaries.empty()) trainer.warm_start_at(split.train_warm_boundaries);
+  if (!split.train_warm_boundaries.empty()) trainer.warm_start_at(split.train_warm_boundaries, split.train_warm_units);
   TrainingProgressBar bar(stderr);
   const CompileModel model = trainer.train(split.train, split.valid, [&](const TrainingProgress& p) { bar.update(p); });
   bar.finish();

@@ -27,7 +27,9 @@ std::string describe_training_progress(const TrainingProgress& p) {
   line += format("  loss %.4g (nll_a %.4g", p.loss, p.nll_action);
   if (p.nll_state != 0.0) line += format(" nll_s %.4g", p.nll_state);
   line += format(" kl_z %.3g kl_b %.3g", p.kl_z, p.kl_b);
-  line += p.warm_start ? format(" boundary_ce %.3g)", p.boundary_ce) : std::string(")");
+  if (p.warm_start) line += format(" boundary_ce %.3g", p.boundary_ce);
+  if (p.warm_start && p.unit_ce != 0.0) line += format(" unit_ce %.3g", p.unit_ce);
+  line += ")";
   if (std::isfinite(p.valid_nll)) line += format("  valid %.4g", p.valid_nll) + (p.improved ? " *" : "");
   if (std::isfinite(p.best_valid_nll)) line += format("  best %.4g", p.best_valid_nll);
   line += "  " + duration(p.elapsed_seconds);

@@ -97,6 +97,7 @@ void CompileConfig::validate(const std::string& where) const {
   need(resample_step >= 0.0, "resample_step must be >= 0");
   need(warm_start_iterations >= 0, "warm_start_iterations must be >= 0");
   need(warm_start_learning_rate >= 0.0 && warm_start_learning_rate < 1.0, "warm_start_learning_rate must be in [0, 1)");
+  need(!warm_start_units || warm_start_iterations > 0, "warm_start_units needs warm_start_iterations > 0");
 }
 
 Json to_json(const CompileConfig& c) {
@@ -122,6 +123,7 @@ Json to_json(const CompileConfig& c) {
               {"warm_start_iterations", c.warm_start_iterations},
               {"warm_start_learning_rate", c.warm_start_learning_rate},
               {"straight_through_latents", c.straight_through_latents},
+              {"warm_start_units", c.warm_start_units},
               {"beta_usage", c.beta_usage}};
 }
 
@@ -158,6 +160,7 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   if (const auto rate = v.find("warm_start_learning_rate")) c.warm_start_learning_rate = rate->number();
   // Absent in models trained on relaxed latents only.
   if (const auto hard = v.find("straight_through_latents")) c.straight_through_latents = hard->boolean();
+  if (const auto units = v.find("warm_start_units")) c.warm_start_units = units->boolean();
   if (const auto usage = v.find("beta_usage")) c.beta_usage = usage->number();
   return c;
 }

@@ -59,6 +59,12 @@ struct CompileConfig {
   // soft mixtures can tell two letters apart by mixtures that share their largest weight, so two letters
   // end up one skill at read-out. With hard codes in training, merging two letters costs reconstruction.
   bool straight_through_latents = false;
+  // The warm start also trains the latent head to give each repeated unit (repeat_units: segments equal
+  // step for step, as the warm start's boundaries cut them) a skill of its own, unit u -> skill u, by a
+  // cross-entropy term. Why: from reconstruction alone the warm start lets two letters share one skill, and
+  // which ones depends on the seed (docs/skills.md); the units are found the way the boundaries are, from
+  // what repeats, never from the true symbols. Needs warm_start_iterations > 0.
+  bool warm_start_units = false;
   // Weight of a bonus for using many skills: the loss subtracts beta_usage times the entropy of the batch's
   // mean latent posterior (over every segment of every trajectory). Why: a skill that starts out covering
   // two letters keeps both, because an unused skill's decoder is untrained and moving one letter there first

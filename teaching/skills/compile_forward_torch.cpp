@@ -229,6 +229,17 @@ Tensor log_length_prior(const Batch& batch, const Encoded& enc, double rate, int
   return prior;
 }
 
+// Sum over the batch's labelled segments of -log q(z = unit) (Batch::segment_units; 0 without labels).
+Tensor unit_cross_entropy(const Batch& batch, const std::vector<Tensor>& latent_logits) {
+  if (batch.segment_units.empty()) return torch::zeros({});
+  std::vector<std::int64_t> target;
+  for (std::size_t k = 0; k < latent_logits.size(); ++k)
+    for (const auto& row : batch.segment_units) target.push_back(row[k]);
+  const Tensor log_q = torch::log_softmax(torch::cat(latent_logits, 0), -1);  // [K * B, M], k-major
+  return F::nll_loss(log_q, torch::tensor(target, torch::kInt64),
+                     F::NLLLossFuncOptions().ignore_index(-1).reduction(torch::kSum));
+}
+
 }  // namespace
 
 Tensor relaxed_latent(const Tensor& logits, at::Generator* gen, bool straight_through) {
@@ -283,6 +294,8 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
     }
     out.total = out.total + out.boundary_ce;
   }
+  out.unit_ce = unit_cross_entropy(batch, enc.latent_logits) * inv_b;
+  out.total = out.total + out.unit_ce;
   return out;
 }
 

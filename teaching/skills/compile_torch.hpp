@@ -99,6 +99,9 @@ struct Batch {
   std::vector<std::vector<int>> fixed_boundaries;
   // Warm start: the loss also pulls the boundary head towards fixed_boundaries (cross-entropy).
   bool supervise_boundaries = false;
+  // Warm start with CompileConfig::warm_start_units: [B][K] the repeated unit of each segment (its target
+  // skill), -1 for none; empty = no unit term.
+  std::vector<std::vector<int>> segment_units;
 };
 // `steps[i]` must match the config's dimensions and have length >= 1. `fixed_boundaries`, when not empty,
 // is parallel to `steps`: each K-1 positions in model steps (see Batch::fixed_boundaries).
@@ -117,6 +120,7 @@ struct LossTerms {
   torch::Tensor total, nll_action, nll_state, kl_z, kl_b;  // scalars (mean over the batch)
   torch::Tensor boundary_ce;    // Batch::supervise_boundaries only (else 0): -log p(fixed boundary), summed over k
   torch::Tensor usage_entropy;  // entropy of the batch's mean latent posterior (CompileConfig::beta_usage)
+  torch::Tensor unit_ce;        // Batch::segment_units only (else 0): -log q(unit's skill), summed over segments
 };
 struct HardReadout {
   std::vector<std::vector<int>> boundaries;  // [B][K] in model steps; the last equals the length

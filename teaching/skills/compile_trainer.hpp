@@ -34,6 +34,7 @@ struct TrainingProgress {
   double kl_z = 0.0;
   double kl_b = 0.0;
   double boundary_ce = 0.0;  // warm start only: cross-entropy of the boundary head against the fixed boundaries
+  double unit_ce = 0.0;      // warm start with warm_start_units: cross-entropy of the latent head against the units
   bool warm_start = false;   // a warm-start iteration (config.warm_start_iterations); then iteration counts those
   double valid_nll = std::numeric_limits<double>::quiet_NaN();  // NaN when not evaluated this iteration
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
@@ -80,14 +81,17 @@ class CompileTrainer {
   // data stop repeating: for augmented copies of repeating data, which inherit their clean word's repetition
   // boundaries (the perturbation keeps step indices). Entry i belongs to training trajectory i; same rules
   // as fix_boundaries (train() throws InputError when they do not match the data).
-  void warm_start_at(std::vector<std::vector<int>> train_boundaries);
+  // `units` (config.warm_start_units): per trajectory the repeated unit of each of its segments (one more
+  // entry than boundaries; -1 = none, else < latent_size), e.g. the clean word's repeat_units inherited by
+  // its copies. Without them, train() finds the units itself by exact repetition in the training data.
+  void warm_start_at(std::vector<std::vector<int>> train_boundaries, std::vector<std::vector<int>> units = {});
 
  private:
   CompileConfig config_;
   TrainingSummary summary_;
   std::vector<std::vector<int>> fixed_train_, fixed_valid_;
   bool fixed_ = false;
-  std::vector<std::vector<int>> warm_given_;
+  std::vector<std::vector<int>> warm_given_, warm_units_given_;
   bool warm_given_set_ = false;
 };
 

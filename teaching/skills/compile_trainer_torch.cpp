@@ -45,8 +45,10 @@ void CompileTrainer::fix_boundaries(std::vector<std::vector<int>> train_boundari
   fixed_ = true;
 }
 
-void CompileTrainer::warm_start_at(std::vector<std::vector<int>> train_boundaries) {
+void CompileTrainer::warm_start_at(std::vector<std::vector<int>> train_boundaries,
+                                   std::vector<std::vector<int>> units) {
   warm_given_ = std::move(train_boundaries);
+  warm_units_given_ = std::move(units);
   warm_given_set_ = true;
 }
 
@@ -55,9 +57,13 @@ namespace {
 // Boundary positions in model steps (empty when boundaries are not fixed), one list per trajectory.
 using FixedPositions = std::vector<std::vector<int>>;
 
-// The batch of data[indices[i]] (with their fixed boundaries, if any), in that order.
+// Per trajectory the unit of each of the model's K segments (-1 = none): the warm start's unit targets.
+using SegmentUnits = std::vector<std::vector<int>>;
+
+// The batch of data[indices[i]] (with their fixed boundaries and segment units, if any), in that order.
 Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
-               const std::vector<std::size_t>& indices, const CompileConfig& config, bool supervise = false) {
+               const std::vector<std::size_t>& indices, const CompileConfig& config, bool supervise = false,
+               const SegmentUnits& units = {}) {
   std::vector<const StepSequence*> steps;
   std::vector<const std::vector<int>*> boundaries;
   for (std::size_t i : indices) {
@@ -66,6 +72,8 @@ Batch batch_of(const std::vector<ModelSteps>& data, const FixedPositions& fixed,
   }
   Batch batch = compile_detail::make_batch(steps, config, boundaries);
   batch.supervise_boundaries = supervise && !fixed.empty();
+  if (supervise && !units.empty())
+    for (std::size_t row : batch.source) batch.segment_units.push_back(units[indices[row]]);
   return batch;
 }
 
@@ -114,6 +122,36 @@ FixedPositions to_fixed_positions(const std::vector<std::vector<int>>& boundarie
   return out;
 }
 
+// The units of each trajectory's segments (one more than its boundaries) spread over the model's K
+// segments at `positions` (to_fixed_positions of those boundaries): segments past the last boundary, and
+// segments that resampling left without a model step, get none (-1). Throws InputError naming `what` for
+// a list of the wrong length or a unit outside 0..latent_size-1.
+SegmentUnits to_segment_units(const std::vector<std::vector<int>>& units, const std::vector<std::vector<int>>& boundaries,
+                              const FixedPositions& positions, int latent_size, const std::string& what) {
+  if (units.size() != boundaries.size())
+    throw InputError(what, std::to_string(units.size()) + " unit lists for " + std::to_string(boundaries.size()) +
+                               " trajectories");
+  SegmentUnits out;
+  for (std::size_t i = 0; i < units.size(); ++i) {
+    const std::string where = what + " " + std::to_string(i);
+    if (units[i].size() != boundaries[i].size() + 1)
+      throw InputError(where, std::to_string(units[i].size()) + " units for " +
+                                  std::to_string(boundaries[i].size() + 1) + " segments");
+    std::vector<int> row(positions[i].size() + 1, -1);
+    for (std::size_t j = 0; j < units[i].size(); ++j) {
+      const int u = units[i][j];
+      if (u < -1 || u >= latent_size)
+        throw InputError(where, "unit " + std::to_string(u) + " is not a skill of the model (0.." +
+                                    std::to_string(latent_size - 1) + ")");
+      const int begin = j == 0 ? 0 : positions[i][j - 1];
+      const bool has_steps = j >= positions[i].size() || positions[i][j] > begin;
+      if (has_steps) row[j] = u;
+    }
+    out.push_back(std::move(row));
+  }
+  return out;
+}
+
 // Eval-mode (hard) reconstruction NLL per trajectory: the early-stopping criterion.
 double validation_nll(const CompileNetwork& net, const std::vector<Batch>& batches) {
   torch::NoGradGuard no_grad;
@@ -147,13 +185,14 @@ void shuffle(std::vector<std::size_t>& order, Rng& rng) {
 // With `supervise` (warm start) the boundary head is also trained towards the fixed boundaries.
 void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator,
                     const std::vector<ModelSteps>& train_steps, const FixedPositions& fixed,
-                    const std::vector<std::size_t>& order, TrainingProgress& p, bool supervise = false) {
+                    const std::vector<std::size_t>& order, TrainingProgress& p, bool supervise = false,
+                    const SegmentUnits& units = {}) {
   const auto batch_size = static_cast<std::size_t>(net.config.batch_size);
   for (std::size_t first = 0; first < order.size(); first += batch_size) {
     const std::vector<std::size_t> chunk(
         order.begin() + static_cast<std::ptrdiff_t>(first),
         order.begin() + static_cast<std::ptrdiff_t>(std::min(order.size(), first + batch_size)));
-    const Batch batch = batch_of(train_steps, fixed, chunk, net.config, supervise);
+    const Batch batch = batch_of(train_steps, fixed, chunk, net.config, supervise, units);
     const auto losses = compile_detail::compute_losses(net, batch, true, &generator);
     optimizer.zero_grad();
     losses.total.backward();
@@ -165,6 +204,7 @@ void train_one_pass(const CompileNetwork& net, torch::optim::Adam& optimizer, at
     p.kl_z += losses.kl_z.item<double>() * w;
     p.kl_b += losses.kl_b.item<double>() * w;
     p.boundary_ce += losses.boundary_ce.item<double>() * w;
+    p.unit_ce += losses.unit_ce.item<double>() * w;
   }
 }
 
@@ -173,6 +213,7 @@ struct RunData {
   const std::vector<ModelSteps>& train_steps;
   const FixedPositions& fixed;
   const FixedPositions& warm;
+  const SegmentUnits& warm_units;  // empty unless config.warm_start_units
   const std::vector<Batch>& valid_batches;
 };
 
@@ -194,7 +235,7 @@ void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Ge
     p.iteration = it;
     p.iterations = count;
     p.warm_start = true;
-    train_one_pass(net, optimizer, generator, data.train_steps, data.warm, usable, p, true);
+    train_one_pass(net, optimizer, generator, data.train_steps, data.warm, usable, p, true, data.warm_units);
     if (!std::isfinite(p.loss))
       throw InputError("compile training", "loss became non-finite in warm-start iteration " + std::to_string(it));
     p.elapsed_seconds = elapsed();
@@ -304,6 +345,7 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   }
   const std::vector<Batch> valid_batches = fixed_batches(valid_steps, fixed_valid, config_);
   FixedPositions warm;
+  SegmentUnits warm_units;
   double warm_count = std::numeric_limits<double>::quiet_NaN();
   if (config_.warm_start_iterations > 0 && !fixed_) {
     RepeatBoundaryConfig repeat;
@@ -313,11 +355,15 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
                                                     std::to_string(train.size()) + " training trajectories");
     const auto found = warm_given_set_ ? warm_given_ : find_repeat_boundaries(train, repeat);
     warm = to_fixed_positions(found, train_steps, config_.num_segments, "warm-start boundaries of training trajectory");
+    if (config_.warm_start_units) {
+      const auto units = warm_units_given_.empty() ? repeat_units(train, found, config_.latent_size) : warm_units_given_;
+      warm_units = to_segment_units(units, found, warm, config_.latent_size, "warm-start units of training trajectory");
+    }
     std::size_t total = 0;
     for (const auto& f : found) total += f.size();
     warm_count = static_cast<double>(total) / static_cast<double>(found.size());
   }
-  const RunData run_data{train_steps, fixed_train, warm, valid_batches};
+  const RunData run_data{train_steps, fixed_train, warm, warm_units, valid_batches};
 
   const auto start_time = std::chrono::steady_clock::now();
   std::mutex report_mutex;

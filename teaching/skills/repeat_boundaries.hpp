@@ -36,4 +36,15 @@ struct RepeatBoundaryConfig {
 std::vector<std::vector<int>> find_repeat_boundaries(const std::vector<StepSequence>& demos,
                                                      const RepeatBoundaryConfig& config = {});
 
+// Which repeated unit each segment is: segment j of demo i runs from boundary j-1 to boundary j of
+// `boundaries[i]` (interior action indices, as find_repeat_boundaries returns them). Segments whose actions
+// are equal step for step (up to `token_precision`) are one unit; units seen at least twice get ids
+// 0, 1, ... by how often they occur (most frequent first, ties by first appearance), at most `max_units`
+// of them; every other segment gets -1. Why: the warm start can then also give each repeated unit a skill
+// of its own (CompileConfig::warm_start_units), instead of hoping that reconstruction alone keeps two
+// letters apart; like the boundaries, this reads only what repeats, never the true symbols.
+std::vector<std::vector<int>> repeat_units(const std::vector<StepSequence>& demos,
+                                           const std::vector<std::vector<int>>& boundaries, int max_units,
+                                           double token_precision = RepeatBoundaryConfig{}.token_precision);
+
 }  // namespace sc

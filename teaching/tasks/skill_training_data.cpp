@@ -32,7 +32,7 @@ std::vector<StepSequence> SkillDataSet::steps() const {
 SkillDataSet generate_parking_demos(int count, std::uint64_t seed) {
   if (count < 1) throw InputError("parking demonstrations", "count must be at least 1");
   const ParkingExpert expert;
-  SkillDataSet out{"parking", "", {}, {}};
+  SkillDataSet out{"parking", "", {}, {}, {}};
   for (int i = 0; i < count; ++i) {
     const ParkingScenario scenario = parking_pool_scenario(seed, i);
     const ParkingPlan plan = expert.plan(scenario);
@@ -52,7 +52,7 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
   const std::vector<std::string> words = writing::classic_words(count, seed);
   const writing::GlyphSet glyphs =
       writing::GlyphSet::load(writing::AlphabetKind::Classic, writing::omniglot_data_dir());
-  SkillDataSet out{"writing", "", {}, {}};
+  SkillDataSet out{"writing", "", {}, {}, {}};
   for (int i = 0; i < count; ++i) {
     const writing::WordTrajectory gold = writing::build_word_trajectory(glyphs, words[static_cast<std::size_t>(i)]);
     const writing::WritingStepData data = writing::expert_step_data(gold);
@@ -70,9 +70,10 @@ SkillDataSet generate_writing_demos(int count, std::uint64_t seed) {
 namespace {
 
 // Interior boundaries (action indices) of `word`'s points moved to the infilled mouse readings of a sampling:
-// entry k of `lists` is a list of point indices; boundaries that would not stay ascending are dropped.
+// entry k of `lists` is a list of point indices; boundaries that would not stay ascending are dropped, and
+// kept[k][j] says whether boundary j of list k survived.
 std::vector<std::vector<int>> mouse_copy(const WrittenWord& word, std::vector<std::vector<int>> lists, Rng& rng,
-                                         StepSequence& steps) {
+                                         StepSequence& steps, std::vector<std::vector<bool>>& kept) {
   std::vector<int> points{0};
   for (const auto& list : lists) points.insert(points.end(), list.begin(), list.end());
   std::sort(points.begin(), points.end());
@@ -82,16 +83,31 @@ std::vector<std::vector<int>> mouse_copy(const WrittenWord& word, std::vector<st
   const SampledTrace sampled = mouse_sampled(marked, MouseSampling{}, rng);
   const std::vector<int> moved = infilled_symbol_starts(sampled.trace, sampled.symbol_starts);
   steps = writing_step_sequence(sampled.trace, writing::AlphabetKind::Classic, word.word);
-  for (auto& list : lists) {
+  kept.assign(lists.size(), {});
+  for (std::size_t k = 0; k < lists.size(); ++k) {
     std::vector<int> out;
-    for (int p : list) {
+    for (int p : lists[k]) {
       const auto at = std::lower_bound(points.begin(), points.end(), p) - points.begin();
       const int b = moved[static_cast<std::size_t>(at)];
-      if (b > (out.empty() ? 0 : out.back()) && b < steps.length()) out.push_back(b);
+      kept[k].push_back(b > (out.empty() ? 0 : out.back()) && b < steps.length());
+      if (kept[k].back()) out.push_back(b);
     }
-    list = std::move(out);
+    lists[k] = std::move(out);
   }
   return lists;
+}
+
+// The units of a copy's segments when some of its boundaries were dropped (kept[j] false): segments joined
+// by a dropped boundary are no one unit (-1).
+std::vector<int> units_after_drops(const std::vector<int>& units, const std::vector<bool>& kept) {
+  std::vector<int> out{units.front()};
+  for (std::size_t j = 0; j < kept.size(); ++j) {
+    if (kept[j])
+      out.push_back(units[j + 1]);
+    else
+      out.back() = -1;
+  }
+  return out;
 }
 
 std::string augmented_description(int count, int copies, std::uint64_t seed, const WritingAugmentation& a) {
@@ -129,11 +145,14 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
   RepeatBoundaryConfig repeat;
   repeat.max_boundaries = CompileConfig::writing_defaults().num_segments - 1;
   const std::vector<std::vector<int>> warm = find_repeat_boundaries(clean_steps, repeat);
-  SkillDataSet out{"writing", augmented_description(count, copies, seed, augmentation), {}, {}};
+  const std::vector<std::vector<int>> units =
+      repeat_units(clean_steps, warm, CompileConfig::writing_defaults().latent_size, repeat.token_precision);
+  SkillDataSet out{"writing", augmented_description(count, copies, seed, augmentation), {}, {}, {}};
   for (int i = 0; i < count; ++i) {
     const std::size_t u = static_cast<std::size_t>(i);
     out.demos.push_back({words[u], clean_steps[u], clean[u].interior_boundaries()});
     out.warm_boundaries.push_back(warm[u]);
+    out.warm_units.push_back(units[u]);
     for (int c = 0; c < copies; ++c) {
       Rng rng = root.fork(static_cast<std::uint64_t>(i)).fork(1u + static_cast<std::uint64_t>(c));
       const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
@@ -145,12 +164,15 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
              writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
              copy.interior_boundaries()});
         out.warm_boundaries.push_back(warm[u]);
+        out.warm_units.push_back(units[u]);
         continue;
       }
       StepSequence steps;
-      auto moved = mouse_copy(copy, {copy.interior_boundaries(), warm[u]}, rng, steps);
+      std::vector<std::vector<bool>> kept;
+      auto moved = mouse_copy(copy, {copy.interior_boundaries(), warm[u]}, rng, steps, kept);
       out.demos.push_back({label, std::move(steps), std::move(moved[0])});
       out.warm_boundaries.push_back(std::move(moved[1]));
+      out.warm_units.push_back(units_after_drops(units[u], kept[1]));
     }
   }
   return out;
@@ -184,6 +206,7 @@ SkillDataSet read_task_demos(TaskKind task, const std::filesystem::path& dir) {
       std::string(to_string(task)),
       std::to_string(files.size()) + " " + std::string(to_string(task)) + " trial files from " + dir.string(),
       {},
+      {},
       {}};
   for (const auto& file : files) {
     StepSequence steps = trial_steps(task, file);
@@ -210,6 +233,7 @@ DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint
     (i < held ? out.valid : out.train).push_back(demo.steps);
     (i < held ? out.valid_boundaries : out.train_boundaries).push_back(demo.true_boundaries);
     if (i >= held && !data.warm_boundaries.empty()) out.train_warm_boundaries.push_back(data.warm_boundaries[order[i]]);
+    if (i >= held && !data.warm_units.empty()) out.train_warm_units.push_back(data.warm_units[order[i]]);
   }
   return out;
 }

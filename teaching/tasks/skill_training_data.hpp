@@ -25,6 +25,8 @@ struct SkillDataSet {
   std::vector<SkillDemo> demos;
   // Empty, or per demo the boundaries the warm start fixes (CompileTrainer::warm_start_at): augmented data.
   std::vector<std::vector<int>> warm_boundaries;
+  // Empty, or per demo the repeated unit of each warm-start segment (repeat_units; CompileConfig::warm_start_units).
+  std::vector<std::vector<int>> warm_units;
   std::vector<StepSequence> steps() const;
 };
 
@@ -50,7 +52,8 @@ struct WritingAugmentation {
 // copies of each (writing_realistic_learner.hpp: smooth wobble up to 12 px, per-letter affine up to 0.12;
 // with `mouse`, then mouse-sampled). warm_boundaries: the clean words' repetition boundaries
 // (find_repeat_boundaries over the clean words, K - 1 = 7 at most), inherited by their copies; the true
-// boundaries are only kept as true_boundaries (for reports), never used to train.
+// boundaries are only kept as true_boundaries (for reports), never used to train. warm_units: the clean words'
+// repeat_units at those boundaries, inherited by their copies (segments a dropped boundary joins: -1).
 SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64_t seed,
                                               const WritingAugmentation& augmentation = {});
 // generate_parking_demos or generate_writing_demos for the task.
@@ -66,6 +69,7 @@ struct DataSplit {
   std::vector<std::vector<int>> train_boundaries;  // the demos' true_boundaries, parallel to train / valid
   std::vector<std::vector<int>> valid_boundaries;
   std::vector<std::vector<int>> train_warm_boundaries;  // the data's warm_boundaries of train (when it has them)
+  std::vector<std::vector<int>> train_warm_units;       // the data's warm_units of train (when it has them)
 };
 // Holds out round(valid_fraction * n) demos (at least 1 when n >= 2) chosen with `seed`.
 DataSplit split_demos(const SkillDataSet& data, double valid_fraction, std::uint64_t seed);

@@ -14,6 +14,8 @@ TEST(TrainingProgressLine, NamesTheWarmStartAndItsBoundaryCrossEntropy) {
   const std::string line = describe_training_progress(p);
   EXPECT_EQ(line.rfind("warm start 3/100", 0), 0u) << line;
   EXPECT_NE(line.find("boundary_ce 2.5)"), std::string::npos) << line;
+  p.unit_ce = 0.75;
+  EXPECT_NE(describe_training_progress(p).find("boundary_ce 2.5 unit_ce 0.75)"), std::string::npos);
   p.warm_start = false;
   EXPECT_EQ(describe_training_progress(p).find("boundary_ce"), std::string::npos);
 }

@@ -34,6 +34,7 @@ TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
   c.warm_start_iterations = 30;
   c.warm_start_learning_rate = 2e-3;
   c.straight_through_latents = true;
+  c.warm_start_units = true;
   const Json j = to_json(c);
   const CompileConfig back = compile_config_from_json(JsonView(j, "m.json"));
   EXPECT_EQ(to_json(back), j);
@@ -68,6 +69,14 @@ TEST(CompileConfig, ModelsFromBeforeStraightThroughLatentsReadAsRelaxed) {
   Json j = to_json(c);
   j.erase("straight_through_latents");
   EXPECT_FALSE(compile_config_from_json(JsonView(j, "old.json")).straight_through_latents);
+}
+
+TEST(CompileConfig, ModelsFromBeforeWarmStartUnitsReadAsWithout) {
+  CompileConfig c = CompileConfig::writing_defaults();
+  c.warm_start_units = true;
+  Json j = to_json(c);
+  j.erase("warm_start_units");
+  EXPECT_FALSE(compile_config_from_json(JsonView(j, "old.json")).warm_start_units);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -14,6 +15,7 @@
 
 #include "engine/core/error.hpp"
 #include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/repeat_boundaries.hpp"
 #include "teaching/skills/segmentation_metrics.hpp"
 #include "teaching/skills/synthetic_sequences.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -211,6 +213,46 @@ TEST(CompileTrainer, WarmStartFromRepeatBoundariesSegmentsNewWordsAtTheSymbolEdg
   const double warm = f1_of(80), cold = f1_of(0);
   std::printf("boundary F1 on new words: warm start %.3f, without %.3f\n", warm, cold);
   EXPECT_GE(warm, 0.9);
+}
+
+TEST(CompileTrainer, WarmStartUnitsGiveEachRepeatedSymbolTheSkillOfItsUnit) {
+  // 5 symbols, 3 per word: repeat_units numbers them by frequency and the warm start's unit term pulls
+  // unit u's segments to skill u. Without the term the skills are whatever reconstruction settled on.
+  const auto train = repeated_symbol_sequences(120, 3, 5, 6, 12, 1, 31);
+  const auto valid = repeated_symbol_sequences(20, 3, 5, 6, 12, 1, 32);
+  const auto train_steps = steps_of(train);
+  const auto units = repeat_units(train_steps, find_repeat_boundaries(train_steps), 6);
+  auto share_on_unit_skill = [&](bool with_units) {
+    CompileConfig c = tiny_config();
+    c.seed = 0;
+    c.iterations = 1;
+    c.warm_start_iterations = 60;
+    c.warm_start_units = with_units;
+    CompileTrainer trainer(c);
+    double last_unit_ce = -1.0;
+    const CompileModel model = trainer.train(train_steps, steps_of(valid), [&](const TrainingProgress& p) {
+      if (p.warm_start) last_unit_ce = p.unit_ce;
+    });
+    EXPECT_EQ(last_unit_ce > 0.0, with_units);
+    const auto segs = model.segment(train_steps);
+    int same = 0, labelled = 0;
+    for (std::size_t i = 0; i < train.size(); ++i) {
+      int begin = 0;
+      for (std::size_t j = 0; j < train[i].boundaries.size(); ++j) {
+        const int end = train[i].boundaries[j], middle = (begin + end) / 2;
+        begin = end;
+        if (j >= units[i].size() || units[i][j] < 0) continue;
+        ++labelled;
+        for (const auto& seg : segs[i].segments)
+          if (seg.begin <= middle && middle < seg.end) same += seg.skill == units[i][j];
+      }
+    }
+    return static_cast<double>(same) / std::max(1, labelled);
+  };
+  const double with = share_on_unit_skill(true), without = share_on_unit_skill(false);
+  std::printf("segments on their unit's skill: with the unit term %.3f, without %.3f\n", with, without);
+  EXPECT_GE(with, 0.9);
+  EXPECT_LT(without, 0.6);
 }
 
 TEST(CompileTrainer, FixedBoundariesThatDoNotFitTheDataAreInputErrors) {

@@ -102,6 +102,26 @@ TEST(RepeatBoundaries, KeepsAtMostMaxBoundariesAtLeastMinSeparationApart) {
   }
 }
 
+TEST(RepeatUnits, EqualSegmentsShareAnIdByFrequencyAndSingletonsGetNone) {
+  std::mt19937 rng(13);
+  const auto symbols = random_symbols(4, rng);
+  // Symbol 0 three times, 1 twice, 2 once, 3 once (the last two never repeat).
+  const std::vector<Word> words = {concatenate(symbols, {1, 0}), concatenate(symbols, {0, 2}),
+                                   concatenate(symbols, {1, 0, 3})};
+  std::vector<StepSequence> demos;
+  std::vector<std::vector<int>> boundaries;
+  for (const auto& w : words) demos.push_back(w.steps), boundaries.push_back(w.boundaries);
+  const auto units = repeat_units(demos, boundaries, 8);
+  EXPECT_EQ(units, (std::vector<std::vector<int>>{{1, 0}, {0, -1}, {1, 0, -1}}));
+  // Only the most frequent unit when one id is allowed.
+  EXPECT_EQ(repeat_units(demos, boundaries, 1), (std::vector<std::vector<int>>{{-1, 0}, {0, -1}, {-1, 0, -1}}));
+  // A slightly different copy of symbol 0 is not the same unit.
+  demos[1].actions[0] += 0.01f;
+  EXPECT_EQ(repeat_units(demos, boundaries, 8)[1][0], -1);
+  EXPECT_THROW(repeat_units(demos, {{}}, 8), InputError);
+  EXPECT_THROW(repeat_units(demos, {{5, 2}, {}, {}}, 8), InputError);
+}
+
 TEST(RepeatBoundaries, RejectsAConfigOutOfRange) {
   RepeatBoundaryConfig config;
   config.context = 0;

@@ -118,13 +118,13 @@ TEST(ParkingSkillPurity, RefusesStepsThatAreNotParkingShaped) {
 }
 
 TEST(SkillQualityReport, WritingHasBoundariesAndParkingHasPurity) {
-  SkillDataSet words{"writing", "two words", {word_demo(100, {50}), word_demo(100, {40})}, {}};
+  SkillDataSet words{"writing", "two words", {word_demo(100, {50}), word_demo(100, {40})}, {}, {}};
   const Json w = skill_quality_report(words, {segments_of({{0, 50}, {1, 50}}), segments_of({{0, 100}})});
   EXPECT_EQ(w.at("boundaries").at("true_positives"), 1);
   EXPECT_EQ(w.at("boundaries").at("false_negatives"), 1);
   EXPECT_EQ(w.at("usage").at("skills_used"), 2);
   EXPECT_FALSE(w.contains("purity"));
-  SkillDataSet lots{"parking", "one plan", {{"p", parking_steps({1, 1}, {0, 0}), {}}}, {}};
+  SkillDataSet lots{"parking", "one plan", {{"p", parking_steps({1, 1}, {0, 0}), {}}}, {}, {}};
   const Json p = skill_quality_report(lots, {segments_of({{0, 2}})});
   EXPECT_TRUE(p.contains("purity"));
   EXPECT_FALSE(p.contains("boundaries"));

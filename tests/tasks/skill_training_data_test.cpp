@@ -89,7 +89,7 @@ TEST(SkillTrainingData, SplitHoldsOutATenthChosenByTheSeed) {
   for (const auto& s : a.valid) lengths_a.insert(s.actions.size());
   for (const auto& s : c.valid) lengths_c.insert(s.actions.size());
   EXPECT_NE(lengths_a, lengths_c);  // another seed holds out other words
-  EXPECT_EQ(split_demos(SkillDataSet{"writing", "", {data.demos[0], data.demos[1]}, {}}, 0.1, 0).valid.size(), 1u);
+  EXPECT_EQ(split_demos(SkillDataSet{"writing", "", {data.demos[0], data.demos[1]}, {}, {}}, 0.1, 0).valid.size(), 1u);
 }
 
 TEST(SkillTrainingData, FolderWithoutTrialsOrWithAForeignTrialIsRefused) {

@@ -31,7 +31,7 @@ SkillDataSet generate_augmented_parking_demos(int count, int copies, std::uint64
     throw InputError("parking demonstrations", "count must be at least 1, copies at least 0");
   const ParkingExpert expert;
   const Rng root = Rng(seed).fork(kAugmentStream);
-  SkillDataSet out{"parking", "", {}, {}};
+  SkillDataSet out{"parking", "", {}, {}, {}};
   int parked = 0;
   for (int i = 0; i < count; ++i) {
     const ParkingScenario scenario = parking_pool_scenario(seed, i);
