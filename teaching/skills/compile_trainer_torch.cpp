@@ -126,11 +126,12 @@ FixedPositions to_fixed_positions(const std::vector<std::vector<int>>& boundarie
 // segments at `positions` (to_fixed_positions of those boundaries): segments past the last boundary, and
 // segments that resampling left without a model step, get none (-1). Throws InputError naming `what` for
 // a list of the wrong length or a unit outside 0..latent_size-1.
-SegmentUnits to_segment_units(const std::vector<std::vector<int>>& units, const std::vector<std::vector<int>>& boundaries,
-                              const FixedPositions& positions, int latent_size, const std::string& what) {
+SegmentUnits to_segment_units(const std::vector<std::vector<int>>& units,
+                              const std::vector<std::vector<int>>& boundaries, const FixedPositions& positions,
+                              int latent_size, const std::string& what) {
   if (units.size() != boundaries.size())
-    throw InputError(what, std::to_string(units.size()) + " unit lists for " + std::to_string(boundaries.size()) +
-                               " trajectories");
+    throw InputError(
+        what, std::to_string(units.size()) + " unit lists for " + std::to_string(boundaries.size()) + " trajectories");
   SegmentUnits out;
   for (std::size_t i = 0; i < units.size(); ++i) {
     const std::string where = what + " " + std::to_string(i);
@@ -356,7 +357,8 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
     const auto found = warm_given_set_ ? warm_given_ : find_repeat_boundaries(train, repeat);
     warm = to_fixed_positions(found, train_steps, config_.num_segments, "warm-start boundaries of training trajectory");
     if (config_.warm_start_units) {
-      const auto units = warm_units_given_.empty() ? repeat_units(train, found, config_.latent_size) : warm_units_given_;
+      const auto units =
+          warm_units_given_.empty() ? repeat_units(train, found, config_.latent_size) : warm_units_given_;
       warm_units = to_segment_units(units, found, warm, config_.latent_size, "warm-start units of training trajectory");
     }
     std::size_t total = 0;

@@ -66,7 +66,8 @@ TEST(RepeatBoundariesWriting, UnitsOfGeneratedWordsAreOneIdPerSymbol) {
                 static_cast<double>(best) / total, spread.size());
     EXPECT_GE(best_unit, 0) << symbol;
     EXPECT_GE(static_cast<double>(best) / total, 0.7) << symbol;
-    EXPECT_EQ(owner.count(best_unit), 0u) << "'" << symbol << "' and '" << owner[best_unit] << "' share unit " << best_unit;
+    EXPECT_EQ(owner.count(best_unit), 0u)
+        << "'" << symbol << "' and '" << owner[best_unit] << "' share unit " << best_unit;
     owner[best_unit] = symbol;
   }
 }
