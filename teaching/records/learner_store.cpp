@@ -5,6 +5,7 @@
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "teaching/records/database_file_check.hpp"
+#include "teaching/records/queued_record_store_impl.hpp"
 #include "teaching/records/record_queries.hpp"
 #include "teaching/records/record_studies.hpp"
 #include "teaching/records/record_validation.hpp"
@@ -37,7 +38,7 @@ auto LearnerStore::write_now(const std::string& what, Fn&& write) {
   }
 }
 
-LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions options) : options_(options) {
+LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions options) : QueuedRecordStore(options) {
   const auto dir = data_dir.empty() ? default_data_dir() : data_dir;
   path_ = dir / kDatabaseFileName;
   locks_ = std::make_unique<LearnerLocks>(path_.string() + ".lock");
@@ -54,13 +55,7 @@ LearnerStore::LearnerStore(const std::filesystem::path& data_dir, StoreOptions o
   const auto state = check_database_file(path_, current_schema_version());
   if (state.is_new && options_.read_only) throw InputError(path_.string(), "is empty (no SkillCoach records)");
   db_ = connect();
-  if (!options_.read_only) {
-    load_spill_file();
-    if (!pending_.empty()) {
-      const auto result = flush();
-      if (!result.message.empty()) open_message_ += (open_message_.empty() ? "" : "; ") + result.message;
-    }
-  }
+  if (!options_.read_only) replay_spill_file();
 }
 
 LearnerStore::~LearnerStore() {
@@ -149,93 +144,9 @@ std::unique_ptr<SqliteDb> LearnerStore::readable_schema(std::unique_ptr<SqliteDb
   return db;
 }
 
-void LearnerStore::load_spill_file() {
-  const auto spill = spill_path();
-  std::error_code ec;
-  if (!std::filesystem::exists(spill, ec)) return;
-  try {
-    for (auto& write : read_spill_file(spill)) pending_.push_back(std::move(write));
-  } catch (const InputError& e) {
-    // Never overwrite what may be a learner's only copy of a trial: move it aside and say so.
-    auto aside = spill;
-    aside += ".unreadable";
-    for (int n = 2; std::filesystem::exists(aside, ec); ++n) {
-      aside = spill;
-      aside += ".unreadable" + std::to_string(n);
-    }
-    std::filesystem::rename(spill, aside, ec);
-    open_message_ = std::string(e.what()) + (ec ? "; left in place" : "; moved to " + aside.string());
-  }
-}
-
-std::int64_t LearnerStore::ensure_learner(std::string_view name, std::string_view created) {
-  require_learner_name(name);
-  require_text(created, "learner creation time");
-  return write_now("save learner \"" + std::string(name) + "\"",
-                   [&](SqliteDb& db) { return insert_learner_if_new(db, name, created); });
-}
-
-std::int64_t LearnerStore::begin_session(const NewSession& session) {
-  validate_new_session(session);
-  claim_learner(session.learner);
-  const auto id = write_now("start a session for \"" + session.learner + "\"", [&](SqliteDb& db) {
-    const auto session_id = insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
-    if (!session.study.empty()) attach_session_to_study(db, session_id, session);
-    return session_id;
-  });
-  last_seq_[id] = 0;
-  return id;
-}
-
-SaveResult LearnerStore::record_trial(const TrialRecord& trial) {
-  require_session(trial.session_id);
-  validate_trial(trial);
-  return submit(TrialWrite{trial, next_seq(trial.session_id)});
-}
-
-SaveResult LearnerStore::save_diagnosis(const DiagnosisRecord& diagnosis) {
-  require_session(diagnosis.session_id);
-  validate_diagnosis(diagnosis);
-  return submit(diagnosis);
-}
-
-SaveResult LearnerStore::save_curriculum(const CurriculumRecord& curriculum) {
-  require_session(curriculum.session_id);
-  validate_curriculum(curriculum);
-  return submit(curriculum);
-}
-
-SaveResult LearnerStore::save_progress(std::int64_t session_id, const SessionProgress& progress) {
-  require_session(session_id);
-  validate_progress(progress);
-  return submit(ProgressWrite{session_id, progress});
-}
-
-SaveResult LearnerStore::finish_session(std::int64_t session_id, std::string_view finished) {
-  require_session(session_id);
-  require_text(finished, "session end time");
-  return submit(FinishWrite{session_id, std::string(finished)});
-}
-
-SaveResult LearnerStore::submit(PendingWrite write) {
-  pending_.push_back(std::move(write));
-  return flush();  // the new write is last in the queue, so it is stored iff the queue empties
-}
-
-SaveResult LearnerStore::flush() {
-  if (pending_.empty()) return {true, 0, {}};
-  std::string problem;
-  if (try_write_pending(problem)) {
-    std::error_code ec;
-    std::filesystem::remove(spill_path(), ec);  // everything it held is in the database now
-    return {true, 0, {}};
-  }
-  const auto count = pending_.size();
-  const std::string next =
-      retryable_ ? "will retry on the next save" : "retrying cannot help until the database is repaired or moved aside";
-  return {false, count,
-          path_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") + " not saved yet (" +
-              problem + "); " + spill_pending() + "; " + next};
+std::string LearnerStore::retry_note() const {
+  return retryable_ ? "will retry on the next save"
+                    : "retrying cannot help until the database is repaired or moved aside";
 }
 
 bool LearnerStore::try_write_pending(std::string& problem) {
@@ -266,88 +177,8 @@ bool LearnerStore::try_write_pending(std::string& problem) {
   return false;
 }
 
-std::string LearnerStore::spill_pending() {
-  spilled_ = false;
-  if (options_.read_only) return "kept in memory only (store opened read-only)";
-  try {
-    write_spill_file(spill_path(), path_, pending_);
-    spilled_ = true;
-    return "kept in memory and in " + spill_path().string();
-  } catch (const InputError& e) {
-    return std::string("kept in memory only (") + e.what() + ")";
-  }
-}
-
-int LearnerStore::next_seq(std::int64_t session_id) {
-  auto it = last_seq_.find(session_id);
-  if (it == last_seq_.end()) {
-    int last = 0;
-    try {
-      last = query_last_seq(connection(), session_id);
-    } catch (const SqliteError&) {  // unreadable now: the pending queue below still orders this session
-    }
-    it = last_seq_.emplace(session_id, last_seq_with_pending(pending_, session_id, last)).first;
-  }
-  return ++it->second;
-}
-
-void LearnerStore::require_session(std::int64_t session_id) const {
-  if (last_seq_.count(session_id) != 0) return;
-  bool known = true;
-  try {
-    known = query_session(connection(), session_id).has_value();
-  } catch (const SqliteError&) {  // cannot check now; a write for an unknown session would stay pending
-  }
-  if (!known) throw InputError(path_.string(), "unknown session id " + std::to_string(session_id));
-}
-
 void LearnerStore::claim_learner(std::string_view name) const {
   if (!options_.read_only) locks_->claim(name);
-}
-
-std::optional<ResumePoint> LearnerStore::find_unfinished_session(std::string_view learner,
-                                                                 std::string_view task) const {
-  claim_learner(learner);
-  const auto sessions = read([&](SqliteDb& db) { return query_unfinished_sessions(db, learner, task); });
-  for (const auto& row : sessions) {
-    ResumePoint point{row, read([&](SqliteDb& db) { return query_trial_count(db, row.id); })};
-    // Writes still pending are part of the learner's work: apply them in order.
-    const bool finished = apply_pending_to_resume(point, pending_);
-    if (!finished) return point;
-  }
-  return std::nullopt;
-}
-
-int LearnerStore::session_count(std::string_view learner, std::string_view task) const {
-  return read([&](SqliteDb& db) { return query_session_count(db, learner, task); });
-}
-
-std::optional<SessionRow> LearnerStore::session(std::int64_t session_id) const {
-  return read([&](SqliteDb& db) { return query_session(db, session_id); });
-}
-
-std::vector<LearnerOverview> LearnerStore::list_learners() const {
-  return read([](SqliteDb& db) { return query_learners(db); });
-}
-
-std::vector<StoredTrial> LearnerStore::trials_of_session(std::int64_t session_id) const {
-  return read([&](SqliteDb& db) { return query_trials(db, session_id); });
-}
-
-std::vector<DiagnosisRecord> LearnerStore::diagnoses_of_session(std::int64_t session_id) const {
-  return read([&](SqliteDb& db) { return query_diagnoses(db, session_id); });
-}
-
-std::vector<CurriculumRecord> LearnerStore::curricula_of_session(std::int64_t session_id) const {
-  return read([&](SqliteDb& db) { return query_curricula(db, session_id); });
-}
-
-void LearnerStore::create_study(const StudyDefinition& study) {
-  validate_study(study);
-  write_now("create study \"" + study.name + "\"", [&](SqliteDb& db) {
-    insert_study(db, study);
-    return 0;
-  });
 }
 
 StudyParticipant LearnerStore::enrol(std::string_view study, std::string_view learner, std::string_view enrolled) {
@@ -357,20 +188,6 @@ StudyParticipant LearnerStore::enrol(std::string_view study, std::string_view le
                    [&](SqliteDb& db) { return enrol_participant(db, study, learner, enrolled); });
 }
 
-std::optional<StudyDefinition> LearnerStore::study(std::string_view name) const {
-  return read([&](SqliteDb& db) { return query_study(db, name); });
-}
-
-std::vector<StudyDefinition> LearnerStore::list_studies() const {
-  return read([](SqliteDb& db) { return query_studies(db); });
-}
-
-std::vector<StudyParticipant> LearnerStore::study_participants(std::string_view study) const {
-  return read([&](SqliteDb& db) { return query_participants(db, study); });
-}
-
-std::vector<SessionSummary> LearnerStore::study_sessions(std::string_view study) const {
-  return read([&](SqliteDb& db) { return query_study_sessions(db, study); });
-}
+template class QueuedRecordStore<LearnerStore, SqliteDb, SqliteError>;
 
 }  // namespace sc::records

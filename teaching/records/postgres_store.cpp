@@ -7,6 +7,7 @@
 #include "teaching/records/data_dir.hpp"
 #include "teaching/records/pg_handle.hpp"
 #include "teaching/records/pg_schema_migrations.hpp"
+#include "teaching/records/queued_record_store_impl.hpp"
 #include "teaching/records/record_queries.hpp"
 #include "teaching/records/record_studies.hpp"
 #include "teaching/records/record_validation.hpp"
@@ -74,7 +75,7 @@ auto PostgresStore::write_now(const std::string& what, Fn&& write) {
 }
 
 PostgresStore::PostgresStore(std::string url, const std::filesystem::path& local_dir, StoreOptions options)
-    : url_(std::move(url)), label_(redact_password(url_)), options_(options) {
+    : QueuedRecordStore(options), url_(std::move(url)), label_(redact_password(url_)) {
   const auto dir = local_dir.empty() ? default_data_dir() : local_dir;
   spill_ = dir / spill_file_name(label_.string());
   try {
@@ -88,11 +89,7 @@ PostgresStore::PostgresStore(std::string url, const std::filesystem::path& local
   if (options_.read_only) return;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  load_spill_file();
-  if (!pending_.empty()) {
-    const auto result = flush();
-    if (!result.message.empty()) open_message_ += (open_message_.empty() ? "" : "; ") + result.message;
-  }
+  replay_spill_file();
 }
 
 PostgresStore::~PostgresStore() {
@@ -143,87 +140,9 @@ int PostgresStore::schema_version() const {
   return read([&](PgDb& db) { return pg_schema_version(db, label_.string()); });
 }
 
-void PostgresStore::load_spill_file() {
-  std::error_code ec;
-  if (!std::filesystem::exists(spill_, ec)) return;
-  try {
-    for (auto& write : read_spill_file(spill_)) pending_.push_back(std::move(write));
-  } catch (const InputError& e) {
-    auto aside = spill_;  // never overwrite what may be a learner's only copy of a trial
-    aside += ".unreadable";
-    std::filesystem::rename(spill_, aside, ec);
-    open_message_ = std::string(e.what()) + (ec ? "; left in place" : "; moved to " + aside.string());
-  }
-}
-
-std::int64_t PostgresStore::ensure_learner(std::string_view name, std::string_view created) {
-  require_learner_name(name);
-  require_text(created, "learner creation time");
-  return write_now("save learner \"" + std::string(name) + "\"",
-                   [&](PgDb& db) { return insert_learner_if_new(db, name, created); });
-}
-
-std::int64_t PostgresStore::begin_session(const NewSession& session) {
-  validate_new_session(session);
-  claim_learner(session.learner);
-  const auto id = write_now("start a session for \"" + session.learner + "\"", [&](PgDb& db) {
-    const auto session_id = insert_session(db, insert_learner_if_new(db, session.learner, session.started), session);
-    if (!session.study.empty()) attach_session_to_study(db, session_id, session);
-    return session_id;
-  });
-  last_seq_[id] = 0;
-  return id;
-}
-
-SaveResult PostgresStore::record_trial(const TrialRecord& trial) {
-  require_session(trial.session_id);
-  validate_trial(trial);
-  return submit(TrialWrite{trial, next_seq(trial.session_id)});
-}
-
-SaveResult PostgresStore::save_diagnosis(const DiagnosisRecord& diagnosis) {
-  require_session(diagnosis.session_id);
-  validate_diagnosis(diagnosis);
-  return submit(diagnosis);
-}
-
-SaveResult PostgresStore::save_curriculum(const CurriculumRecord& curriculum) {
-  require_session(curriculum.session_id);
-  validate_curriculum(curriculum);
-  return submit(curriculum);
-}
-
-SaveResult PostgresStore::save_progress(std::int64_t session_id, const SessionProgress& progress) {
-  require_session(session_id);
-  validate_progress(progress);
-  return submit(ProgressWrite{session_id, progress});
-}
-
-SaveResult PostgresStore::finish_session(std::int64_t session_id, std::string_view finished) {
-  require_session(session_id);
-  require_text(finished, "session end time");
-  return submit(FinishWrite{session_id, std::string(finished)});
-}
-
-SaveResult PostgresStore::submit(PendingWrite write) {
-  pending_.push_back(std::move(write));
-  return flush();  // the new write is last in the queue, so it is stored iff the queue empties
-}
-
-SaveResult PostgresStore::flush() {
-  if (pending_.empty()) return {true, 0, {}};
-  std::string problem;
-  if (try_write_pending(problem)) {
-    std::error_code ec;
-    std::filesystem::remove(spill_, ec);  // everything it held is on the server now
-    return {true, 0, {}};
-  }
-  const auto count = pending_.size();
-  const std::string next = retryable_ ? "will upload them when the server is back (next save)"
-                                      : "retrying cannot help until the server's database is repaired";
-  return {false, count,
-          label_.string() + ": " + std::to_string(count) + (count == 1 ? " record" : " records") +
-              " not saved on the server yet (" + problem + "); " + spill_pending() + "; " + next};
+std::string PostgresStore::retry_note() const {
+  return retryable_ ? "will upload them when the server is back (next save)"
+                    : "retrying cannot help until the server's database is repaired";
 }
 
 bool PostgresStore::try_write_pending(std::string& problem) {
@@ -255,84 +174,6 @@ bool PostgresStore::try_write_pending(std::string& problem) {
   }
 }
 
-std::string PostgresStore::spill_pending() {
-  spilled_ = false;
-  if (options_.read_only) return "kept in memory only (store opened read-only)";
-  try {
-    write_spill_file(spill_, label_, pending_);
-    spilled_ = true;
-    return "kept in memory and in " + spill_.string();
-  } catch (const InputError& e) {
-    return std::string("kept in memory only (") + e.what() + ")";
-  }
-}
-
-int PostgresStore::next_seq(std::int64_t session_id) {
-  auto it = last_seq_.find(session_id);
-  if (it == last_seq_.end()) {
-    int last = 0;
-    try {
-      last = query_last_seq(connection(), session_id);
-    } catch (const PgError&) {  // unreachable now: the pending queue below still orders this session
-    }
-    it = last_seq_.emplace(session_id, last_seq_with_pending(pending_, session_id, last)).first;
-  }
-  return ++it->second;
-}
-
-void PostgresStore::require_session(std::int64_t session_id) const {
-  if (last_seq_.count(session_id) != 0) return;
-  bool known = true;
-  try {
-    known = query_session(connection(), session_id).has_value();
-  } catch (const PgError&) {  // cannot check now; a write for an unknown session would stay pending
-  }
-  if (!known) throw InputError(label_.string(), "unknown session id " + std::to_string(session_id));
-}
-
-std::optional<ResumePoint> PostgresStore::find_unfinished_session(std::string_view learner,
-                                                                  std::string_view task) const {
-  claim_learner(learner);
-  const auto sessions = read([&](PgDb& db) { return query_unfinished_sessions(db, learner, task); });
-  for (const auto& row : sessions) {
-    ResumePoint point{row, read([&](PgDb& db) { return query_trial_count(db, row.id); })};
-    if (!apply_pending_to_resume(point, pending_)) return point;  // pending writes are the learner's work too
-  }
-  return std::nullopt;
-}
-
-int PostgresStore::session_count(std::string_view learner, std::string_view task) const {
-  return read([&](PgDb& db) { return query_session_count(db, learner, task); });
-}
-
-std::optional<SessionRow> PostgresStore::session(std::int64_t session_id) const {
-  return read([&](PgDb& db) { return query_session(db, session_id); });
-}
-
-std::vector<LearnerOverview> PostgresStore::list_learners() const {
-  return read([](PgDb& db) { return query_learners(db); });
-}
-
-std::vector<StoredTrial> PostgresStore::trials_of_session(std::int64_t session_id) const {
-  return read([&](PgDb& db) { return query_trials(db, session_id); });
-}
-
-std::vector<DiagnosisRecord> PostgresStore::diagnoses_of_session(std::int64_t session_id) const {
-  return read([&](PgDb& db) { return query_diagnoses(db, session_id); });
-}
-
-std::vector<CurriculumRecord> PostgresStore::curricula_of_session(std::int64_t session_id) const {
-  return read([&](PgDb& db) { return query_curricula(db, session_id); });
-}
-
-void PostgresStore::create_study(const StudyDefinition& study) {
-  validate_study(study);
-  write_now("create study \"" + study.name + "\"", [&](PgDb& db) {
-    insert_study(db, study);
-    return 0;
-  });
-}
-
 StudyParticipant PostgresStore::enrol(std::string_view study, std::string_view learner, std::string_view enrolled) {
   require_learner_name(learner);
   require_text(enrolled, "enrolment time");
@@ -343,20 +184,6 @@ StudyParticipant PostgresStore::enrol(std::string_view study, std::string_view l
   });
 }
 
-std::optional<StudyDefinition> PostgresStore::study(std::string_view name) const {
-  return read([&](PgDb& db) { return query_study(db, name); });
-}
-
-std::vector<StudyDefinition> PostgresStore::list_studies() const {
-  return read([](PgDb& db) { return query_studies(db); });
-}
-
-std::vector<StudyParticipant> PostgresStore::study_participants(std::string_view study) const {
-  return read([&](PgDb& db) { return query_participants(db, study); });
-}
-
-std::vector<SessionSummary> PostgresStore::study_sessions(std::string_view study) const {
-  return read([&](PgDb& db) { return query_study_sessions(db, study); });
-}
+template class QueuedRecordStore<PostgresStore, PgDb, PgError>;
 
 }  // namespace sc::records
