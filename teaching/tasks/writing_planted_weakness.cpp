@@ -73,11 +73,11 @@ int letter_skill(const WritingKit& kit, char letter) {
 }
 
 ExpertiseEstimate diagnose(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
-                           const std::vector<std::string>& words, const PlantedLearner& learner) {
+                           const std::vector<std::string>& words, const PlantedLearner& learner, ExpertiseMode mode) {
   std::vector<Json> trials;
   for (std::size_t i = 0; i < words.size(); ++i)
     trials.push_back(writing::writing_trial_json(planted_trial(glyphs, words[i], learner, static_cast<int>(i))));
-  return diagnose_trials(kit, trials, learner.seed).expertise;
+  return diagnose_trials(kit, trials, learner.seed, mode).expertise;
 }
 
 }  // namespace
@@ -121,7 +121,7 @@ writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std
 }
 
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
-                                                 int learners_per_letter, std::uint64_t seed) {
+                                                 int learners_per_letter, std::uint64_t seed, ExpertiseMode mode) {
   PlantedWeaknessReport report;
   for (int i : select_diverse_scenarios(demo_skills(kit.expert_pool()), SessionSettings{}.pretest_count).scenarios())
     report.pretest_words.push_back(kit.gold_words()[static_cast<std::size_t>(i)].word);
@@ -131,7 +131,7 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
     for (int i = 0; i < learners_per_letter; ++i) {
       const PlantedLearner learner{letter, kFaults[i % 3],
                                    root.fork(1000u * static_cast<unsigned char>(letter) + i).next_u64()};
-      const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, learner);
+      const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, learner, mode);
       const bool hit = !e.targets.empty() && e.targets.front() == row.skill;
       ++row.learners;
       row.top_target += hit;
@@ -142,7 +142,7 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
   }
   for (int i = 0; i < learners_per_letter; ++i) {
     const ExpertiseEstimate e =
-        diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()});
+        diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()}, mode);
     double lowest = 0.0;
     for (int m : e.targets) lowest = std::min(lowest, e.expertise[static_cast<std::size_t>(m)]);
     ++report.noise_learners;

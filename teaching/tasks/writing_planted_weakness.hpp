@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/writing/writing_trial.hpp"
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_realistic_learner.hpp"
 
@@ -58,8 +59,11 @@ struct PlantedWeaknessReport {
   std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
 };
 
+// `mode`: the expertise estimate the diagnosis uses (Alg. 2, the app's default, or quality-aware); the
+// confident-target threshold is the same for both.
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
-                                                 int learners_per_letter, std::uint64_t seed);
+                                                 int learners_per_letter, std::uint64_t seed,
+                                                 ExpertiseMode mode = ExpertiseMode::Alg2);
 
 std::string planted_weakness_table(const PlantedWeaknessReport& report);
 

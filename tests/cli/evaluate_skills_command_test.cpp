@@ -119,6 +119,17 @@ TEST(EvaluateSkillsCommand, TimeHeuristicIsScoredAsTheBaselineWithoutAModel) {
   }
 }
 
+TEST(EvaluateSkillsCommand, PlantedWeaknessesNameTheExpertiseModeAndTheModeNeedsThem) {
+  const auto r = run_skillcoach(
+      "evaluate-skills --task writing --time-heuristic --planted-weaknesses --learners 1 --expertise quality-aware");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 learners per letter, seed 1, quality-aware expertise:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("| e |"), std::string::npos) << r.output;
+  const auto alone = run_skillcoach("evaluate-skills --task writing --time-heuristic --expertise quality-aware");
+  EXPECT_EQ(alone.exit_code, 2) << alone.output;
+  EXPECT_EQ(test::count_lines(alone.output), 1) << alone.output;
+}
+
 TEST(EvaluateSkillsCommand, NeedsAModelOrTheTimeHeuristic) {
   const auto r = run_skillcoach("evaluate-skills --task writing --count 2");
   EXPECT_EQ(r.exit_code, 2) << r.output;
