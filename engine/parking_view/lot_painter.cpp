@@ -27,6 +27,7 @@ void paint_walls(Renderer2D& r, const ParkingLayout& layout) {
 }  // namespace
 
 void paint_lot(Renderer2D& r, const ParkingLayout& layout) {
+  r.begin_static_layer();  // the lot never moves: copied from a cache while the camera stays put
   const WorldRect visible = r.camera().visible_world();
   r.fill_rect({{(visible.min_x + visible.max_x) / 2, (visible.min_y + visible.max_y) / 2},
                {(visible.max_x - visible.min_x) / 2, (visible.max_y - visible.min_y) / 2},
@@ -41,6 +42,7 @@ void paint_lot(Renderer2D& r, const ParkingLayout& layout) {
   const CarLook parked = parked_car_look();
   for (const OrientedBox& car : layout.parked_cars)
     paint_car(r, {to_vec(car.x, car.y), static_cast<float>(car.heading), 0.0f}, parked);
+  r.end_static_layer();
 }
 
 void paint_goal(Renderer2D& r, const Pose& goal, bool reverse_in) {

@@ -23,7 +23,7 @@ inline constexpr Color kReverseGoal = Color::hex(0xffae3c);  // reverse-in targe
 }  // namespace parking_view
 
 // Fills the camera's whole visible world with the ground colour, then the spot lines, the walls and the
-// parked cars. Call after Renderer2D::set_camera().
+// parked cars, as a static layer (Renderer2D::begin_static_layer). Call after Renderer2D::set_camera().
 void paint_lot(Renderer2D& renderer, const ParkingLayout& layout);
 
 // The goal landmark and the target pose of the car (`goal` as from goal_pose(scenario)).

@@ -21,6 +21,7 @@
 #include "engine/render/draw_types.hpp"
 #include "engine/render/gl_context.hpp"
 #include "engine/render/shader_program.hpp"
+#include "engine/render/static_layer_cache.hpp"
 #include "engine/render/stroke_geometry.hpp"
 
 namespace sc {
@@ -37,7 +38,8 @@ struct ArrowHead {
 
 struct RenderStats {
   int draw_calls = 0;
-  int vertices = 0;
+  int vertices = 0;             // drawn this frame (a static layer copied from the cache is not drawn)
+  int static_layer_copies = 0;  // static layers copied from the cache instead of drawn
 };
 
 class Renderer2D {
@@ -71,6 +73,15 @@ class Renderer2D {
   void ghost_ribbon(std::span<const Vec2f> points, Stroke stroke, Color color, const PathStyle& style = {});
   void arrow(Vec2f from, Vec2f to, Stroke stroke, ArrowHead head, Color color);
 
+  // A static layer: what is drawn between these two calls (e.g. a parking lot) is drawn once into a cache
+  // and copied from there in later frames while it stays the same. "The same" is decided on the layer's own
+  // tessellated geometry (vertices, colours, clips) and the framebuffer size, so the copy cannot go stale.
+  // It is only used where it gives exactly the pixels drawing would: a single-sample target, and a layer
+  // that starts by covering its viewport with an opaque ground (fill_rect's scissored clear), draws nothing
+  // outside that viewport and no ghost ribbons. Otherwise the layer is drawn as usual. Layers do not nest.
+  void begin_static_layer();
+  void end_static_layer();
+
   // Counts of the last end_frame().
   RenderStats last_frame_stats() const { return stats_; }
 
@@ -83,7 +94,7 @@ class Renderer2D {
     std::size_t first = 0;
     std::size_t count = 0;
     PixelViewport clip;
-    int stencil_ref = 0;  // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
+    int stencil_ref = 0;         // 0: ordinary; >0: ghost drawn once per pixel with this stencil value
     std::optional<Color> clear;  // set: no triangles, the clip rectangle is cleared to this colour
   };
 
@@ -110,6 +121,10 @@ class Renderer2D {
   // The pixels the batched ghost ribbons can touch, if there are any.
   std::optional<ScissorBox> ghost_bounds() const;
   void clear_stencil(const ScissorBox& box);
+  ScissorBox scissor_of(const PixelViewport& clip) const;
+  // Whether the batches from `first` on form a layer a copy can stand in for (see begin_static_layer).
+  bool copyable_layer(std::size_t first) const;
+  std::uint64_t layer_key(std::size_t first) const;
 
   GlContext& context_;
   const GlFunctions& gl_;
@@ -125,6 +140,9 @@ class Renderer2D {
   FeatheredTriangles feathered_;
   int next_ghost_ref_ = 1;
   bool in_frame_ = false;
+  bool single_sample_target_ = false;
+  std::optional<std::size_t> layer_first_batch_;  // set between begin_ and end_static_layer
+  StaticLayerCache layer_cache_;
   RenderStats stats_;
 };
 
