@@ -66,6 +66,8 @@ void BM_ScreenFrame(benchmark::State& state, const char* screen, bool advance_cl
   // The scene's share (ImGui's triangles are not counted): on llvmpipe each triangle has a set-up cost.
   state.counters["scene_draw_calls"] = host.renderer().last_frame_stats().draw_calls;
   state.counters["scene_vertices"] = host.renderer().last_frame_stats().vertices;
+  // 1 when the static lot was copied from its cache rather than drawn (Renderer2D::begin_static_layer).
+  state.counters["static_layer_copies"] = host.renderer().last_frame_stats().static_layer_copies;
 }
 BENCHMARK_CAPTURE(BM_ScreenFrame, free_drive, "free_drive", true)
     ->Name("render/frame_1280x720/free_drive")
