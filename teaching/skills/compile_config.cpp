@@ -1,5 +1,7 @@
 #include "teaching/skills/compile_config.hpp"
 
+#include <cmath>
+
 #include "engine/core/error.hpp"
 
 namespace sc {
@@ -98,6 +100,8 @@ void CompileConfig::validate(const std::string& where) const {
   need(warm_start_iterations >= 0, "warm_start_iterations must be >= 0");
   need(warm_start_learning_rate >= 0.0 && warm_start_learning_rate < 1.0, "warm_start_learning_rate must be in [0, 1)");
   need(!warm_start_units || warm_start_iterations > 0, "warm_start_units needs warm_start_iterations > 0");
+  need(warm_start_unit_weight >= 0.0 && std::isfinite(warm_start_unit_weight),
+       "warm_start_unit_weight must be a finite number >= 0");
 }
 
 Json to_json(const CompileConfig& c) {
@@ -124,6 +128,7 @@ Json to_json(const CompileConfig& c) {
               {"warm_start_learning_rate", c.warm_start_learning_rate},
               {"straight_through_latents", c.straight_through_latents},
               {"warm_start_units", c.warm_start_units},
+              {"warm_start_unit_weight", c.warm_start_unit_weight},
               {"beta_usage", c.beta_usage}};
 }
 
@@ -161,6 +166,7 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   // Absent in models trained on relaxed latents only.
   if (const auto hard = v.find("straight_through_latents")) c.straight_through_latents = hard->boolean();
   if (const auto units = v.find("warm_start_units")) c.warm_start_units = units->boolean();
+  if (const auto weight = v.find("warm_start_unit_weight")) c.warm_start_unit_weight = weight->number();
   if (const auto usage = v.find("beta_usage")) c.beta_usage = usage->number();
   return c;
 }

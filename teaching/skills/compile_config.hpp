@@ -65,6 +65,9 @@ struct CompileConfig {
   // which ones depends on the seed (docs/skills.md); the units are found the way the boundaries are, from
   // what repeats, never from the true symbols. Needs warm_start_iterations > 0.
   bool warm_start_units = false;
+  // Weight of that unit term against the reconstruction NLL (the boundary term has weight 1). Measured: at
+  // weight 1 one restart in three ended the warm start with two letters still on one skill (docs/skills.md).
+  double warm_start_unit_weight = 1.0;
   // Weight of a bonus for using many skills: the loss subtracts beta_usage times the entropy of the batch's
   // mean latent posterior (over every segment of every trajectory). Why: a skill that starts out covering
   // two letters keeps both, because an unused skill's decoder is untrained and moving one letter there first

@@ -295,7 +295,7 @@ LossTerms compute_losses(const CompileNetwork& net, const Batch& batch, bool rel
     out.total = out.total + out.boundary_ce;
   }
   out.unit_ce = unit_cross_entropy(batch, enc.latent_logits) * inv_b;
-  out.total = out.total + out.unit_ce;
+  out.total = out.total + cfg.warm_start_unit_weight * out.unit_ce;
   return out;
 }
 

@@ -35,6 +35,7 @@ TEST(CompileConfig, JsonRoundTripAndPathAwareErrors) {
   c.warm_start_learning_rate = 2e-3;
   c.straight_through_latents = true;
   c.warm_start_units = true;
+  c.warm_start_unit_weight = 10.0;
   const Json j = to_json(c);
   const CompileConfig back = compile_config_from_json(JsonView(j, "m.json"));
   EXPECT_EQ(to_json(back), j);
@@ -76,7 +77,9 @@ TEST(CompileConfig, ModelsFromBeforeWarmStartUnitsReadAsWithout) {
   c.warm_start_units = true;
   Json j = to_json(c);
   j.erase("warm_start_units");
+  j.erase("warm_start_unit_weight");
   EXPECT_FALSE(compile_config_from_json(JsonView(j, "old.json")).warm_start_units);
+  EXPECT_EQ(compile_config_from_json(JsonView(j, "old.json")).warm_start_unit_weight, 1.0);
 }
 
 }  // namespace
