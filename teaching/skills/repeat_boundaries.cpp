@@ -144,41 +144,39 @@ std::vector<std::vector<int>> repeat_units(const std::vector<StepSequence>& demo
   if (max_units < 0 || !(token_precision > 0.0))
     throw InputError("repeat units", "max_units must be >= 0 and the precision > 0");
   const auto tokens = tokenize(demos, token_precision);
-  struct Seen {
-    int count = 0, first = 0;
+  struct Unit {
+    int count = 0, first = 0;  // occurrences; order of first appearance
+    int id = -1;
   };
-  std::map<std::vector<int>, Seen> seen;
-  std::vector<std::vector<const std::vector<int>*>> keys(demos.size());
+  std::map<std::vector<int>, Unit> units_by_steps;
+  std::vector<std::vector<Unit*>> segments(demos.size());
   for (std::size_t d = 0; d < demos.size(); ++d) {
     std::size_t begin = 0;
     for (std::size_t j = 0; j <= boundaries[d].size(); ++j) {
       const std::size_t end = j < boundaries[d].size() ? static_cast<std::size_t>(boundaries[d][j]) : tokens[d].size();
       if (end < begin || end > tokens[d].size())
         throw InputError("repeat units", "boundaries of demonstration " + std::to_string(d) + " are not ascending");
-      std::vector<int> key(tokens[d].begin() + static_cast<std::ptrdiff_t>(begin),
-                           tokens[d].begin() + static_cast<std::ptrdiff_t>(end));
-      auto it = seen.emplace(std::move(key), Seen{0, static_cast<int>(seen.size())}).first;
-      ++it->second.count;
-      keys[d].push_back(&it->first);
+      std::vector<int> steps(tokens[d].begin() + static_cast<std::ptrdiff_t>(begin),
+                             tokens[d].begin() + static_cast<std::ptrdiff_t>(end));
+      Unit& unit =
+          units_by_steps.emplace(std::move(steps), Unit{0, static_cast<int>(units_by_steps.size())}).first->second;
+      ++unit.count;
+      segments[d].push_back(&unit);
       begin = end;
     }
   }
-  std::vector<std::pair<const std::vector<int>*, Seen>> ranked;
-  for (const auto& [key, s] : seen)
-    if (s.count >= 2) ranked.emplace_back(&key, s);
-  std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
-    return a.second.count != b.second.count ? a.second.count > b.second.count : a.second.first < b.second.first;
+  std::vector<Unit*> repeated;
+  for (auto& entry : units_by_steps)
+    if (entry.second.count >= 2) repeated.push_back(&entry.second);
+  std::sort(repeated.begin(), repeated.end(), [](const Unit* a, const Unit* b) {
+    return a->count != b->count ? a->count > b->count : a->first < b->first;
   });
-  std::map<const std::vector<int>*, int> id;
-  for (std::size_t u = 0; u < ranked.size() && u < static_cast<std::size_t>(max_units); ++u)
-    id[ranked[u].first] = static_cast<int>(u);
+  for (std::size_t u = 0; u < repeated.size() && u < static_cast<std::size_t>(max_units); ++u)
+    repeated[u]->id = static_cast<int>(u);
   std::vector<std::vector<int>> out;
-  for (const auto& row : keys) {
+  for (const auto& row : segments) {
     std::vector<int> units;
-    for (const auto* key : row) {
-      const auto it = id.find(key);
-      units.push_back(it == id.end() ? -1 : it->second);
-    }
+    for (const Unit* unit : row) units.push_back(unit->id);
     out.push_back(std::move(units));
   }
   return out;
