@@ -66,7 +66,8 @@ struct CompileConfig {
   // what repeats, never from the true symbols. Needs warm_start_iterations > 0.
   bool warm_start_units = false;
   // Weight of that unit term against the reconstruction NLL (the boundary term has weight 1). Measured: at
-  // weight 1 one restart in three ended the warm start with two letters still on one skill (docs/skills.md).
+  // weight 1 one restart in three ended the warm start with two letters still on one skill (docs/skills.md);
+  // choose_restart (restart_choice.hpp) does not keep such a restart while another separated its units.
   double warm_start_unit_weight = 1.0;
   // Weight of a bonus for using many skills: the loss subtracts beta_usage times the entropy of the batch's
   // mean latent posterior (over every segment of every trajectory). Why: a skill that starts out covering

@@ -7,8 +7,9 @@
 // kept. (The reference measured on its eval split and saved every 5 epochs rather than the best, so its
 // shipped models were arbitrary snapshots: reference-facts §3.6, §6.5, §6.10.)
 // With config.restarts > 1, that many runs (seeds seed, seed + 1, ...) train in parallel (one thread per
-// core, each run single-threaded) and the run with the lowest validation NLL is kept; ties go to the
-// lower seed. Without a validation split the first run is kept.
+// core, each run single-threaded) and one is kept by choose_restart (restart_choice.hpp): the lowest
+// validation NLL among the runs whose warm start separated its units; ties go to the lower seed. Without a
+// validation split the first such run is kept.
 // With config.warm_start_iterations > 0 (and boundaries not fixed), each run first trains with the boundaries
 // fixed where the training data stop repeating (find_repeat_boundaries) and the boundary head supervised
 // towards them; the weights it leaves are the first candidate for "best" (best_iteration 0).
@@ -44,8 +45,9 @@ struct TrainingProgress {
 };
 
 struct TrainingSummary {
-  int restart = 0;                        // the run whose weights were kept (lowest validation NLL)
+  int restart = 0;                        // the run whose weights were kept (choose_restart)
   std::vector<double> restart_valid_nll;  // best validation NLL of every run (NaN without a valid split)
+  std::vector<double> restart_unit_term;  // every run's warm_start_unit_term
   int iterations_run = 0;
   int best_iteration = 0;  // iteration whose weights were kept (0 = before the first: untrained, or as warm-started)
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
@@ -55,6 +57,8 @@ struct TrainingSummary {
   // Warm start (config.warm_start_iterations > 0): mean number of repetition boundaries per training trajectory.
   double warm_start_boundaries = std::numeric_limits<double>::quiet_NaN();
   double warm_start_valid_nll = std::numeric_limits<double>::quiet_NaN();  // of the weights the warm start left
+  // With warm_start_units: the unit cross-entropy of the warm start's last pass, per trajectory (else NaN).
+  double warm_start_unit_term = std::numeric_limits<double>::quiet_NaN();
   Json to_json() const;
 };
 

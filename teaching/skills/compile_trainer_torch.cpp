@@ -1,5 +1,5 @@
 // CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept;
-// several runs (restarts) in parallel, the best by validation NLL kept.
+// several runs (restarts) in parallel, one kept (choose_restart: validation NLL, and the warm start's unit term).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -14,6 +14,7 @@
 #include "teaching/skills/compile_torch.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/skills/repeat_boundaries.hpp"
+#include "teaching/skills/restart_choice.hpp"
 
 namespace sc {
 
@@ -22,10 +23,14 @@ using compile_detail::CompileNetwork;
 
 Json TrainingSummary::to_json() const {
   auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-  Json restarts = Json::array();
-  for (double v : restart_valid_nll) restarts.push_back(std::isfinite(v) ? Json(v) : Json(nullptr));
+  auto nums = [&](const std::vector<double>& values) {
+    Json out = Json::array();
+    for (double v : values) out.push_back(num(v));
+    return out;
+  };
   return Json{{"restart", restart},
-              {"restart_valid_nll", std::move(restarts)},
+              {"restart_valid_nll", nums(restart_valid_nll)},
+              {"restart_unit_term", nums(restart_unit_term)},
               {"iterations_run", iterations_run},
               {"best_iteration", best_iteration},
               {"best_valid_nll", num(best_valid_nll)},
@@ -33,7 +38,8 @@ Json TrainingSummary::to_json() const {
               {"seconds", seconds},
               {"stopped_early", stopped_early},
               {"warm_start_boundaries", num(warm_start_boundaries)},
-              {"warm_start_valid_nll", num(warm_start_valid_nll)}};
+              {"warm_start_valid_nll", num(warm_start_valid_nll)},
+              {"warm_start_unit_term", num(warm_start_unit_term)}};
 }
 
 CompileTrainer::CompileTrainer(CompileConfig config) : config_(std::move(config)) {}
@@ -220,15 +226,16 @@ struct RunData {
 
 // Warm start (CompileConfig::warm_start_iterations): passes with the boundaries fixed at `warm` and the
 // boundary head supervised towards them. No validation here: the best weights are chosen afterwards, by
-// the model's own boundaries.
-void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator, const RunData& data,
-                std::vector<std::size_t>& usable, Rng& shuffle_rng, int restart, const std::function<double()>& elapsed,
-                const std::function<void(TrainingProgress&)>& report) {
+// the model's own boundaries. Returns the unit term of the last pass (NaN without units).
+double warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Generator& generator,
+                  const RunData& data, std::vector<std::size_t>& usable, Rng& shuffle_rng, int restart,
+                  const std::function<double()>& elapsed, const std::function<void(TrainingProgress&)>& report) {
   const int count = net.config.warm_start_iterations;
   auto set_rate = [&](double rate) {
     for (auto& group : optimizer.param_groups()) static_cast<torch::optim::AdamOptions&>(group.options()).lr(rate);
   };
   if (net.config.warm_start_learning_rate > 0.0) set_rate(net.config.warm_start_learning_rate);
+  double unit_term = std::numeric_limits<double>::quiet_NaN();
   for (int it = 1; it <= count; ++it) {
     shuffle(usable, shuffle_rng);
     TrainingProgress p;
@@ -241,8 +248,10 @@ void warm_start(const CompileNetwork& net, torch::optim::Adam& optimizer, at::Ge
       throw InputError("compile training", "loss became non-finite in warm-start iteration " + std::to_string(it));
     p.elapsed_seconds = elapsed();
     report(p);
+    if (!data.warm_units.empty()) unit_term = p.unit_ce;
   }
   set_rate(net.config.learning_rate);
+  return unit_term;
 }
 
 // `seed` (config.seed + restart) draws the run's initial weights, Gumbel noise and batch order; the network
@@ -266,7 +275,8 @@ RunResult train_run(const CompileConfig& config, std::uint64_t seed, int restart
   std::vector<torch::Tensor> best;
   double warm_valid_nll = std::numeric_limits<double>::quiet_NaN();
   if (!data.warm.empty()) {
-    warm_start(net, optimizer, generator, data, usable, shuffle_rng, restart, elapsed, report);
+    summary.warm_start_unit_term =
+        warm_start(net, optimizer, generator, data, usable, shuffle_rng, restart, elapsed, report);
     // The warm-started weights are a candidate like any checkpoint (best_iteration 0): measured on the
     // writing words, the first free iterations at the usual learning rate undo the warm start (the
     // relaxed boundaries' Gumbel noise moves them off the letters), and early stopping must be able to
@@ -394,13 +404,16 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 
-  std::size_t kept = 0;
-  for (std::size_t r = 1; r < runs.size(); ++r)
-    if (runs[r].summary.best_valid_nll < runs[kept].summary.best_valid_nll) kept = r;
+  std::vector<RestartOutcome> outcomes;
+  for (const RunResult& run : runs) outcomes.push_back({run.summary.best_valid_nll, run.summary.warm_start_unit_term});
+  const std::size_t kept = choose_restart(outcomes);
   summary_ = runs[kept].summary;
   summary_.restart = static_cast<int>(kept);
   summary_.warm_start_boundaries = warm_count;
-  for (const RunResult& run : runs) summary_.restart_valid_nll.push_back(run.summary.best_valid_nll);
+  for (const RestartOutcome& run : outcomes) {
+    summary_.restart_valid_nll.push_back(run.valid_nll);
+    summary_.restart_unit_term.push_back(run.unit_term);
+  }
   summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
   return CompileModel(std::move(runs[kept].impl));
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -234,6 +235,12 @@ TEST(CompileTrainer, WarmStartUnitsGiveEachRepeatedSymbolTheSkillOfItsUnit) {
       if (p.warm_start) last_unit_ce = p.unit_ce;
     });
     EXPECT_EQ(last_unit_ce > 0.0, with_units);
+    // The summary keeps the last pass's unit term for choose_restart (NaN without units).
+    if (with_units)
+      EXPECT_EQ(trainer.summary().warm_start_unit_term, last_unit_ce);
+    else
+      EXPECT_TRUE(std::isnan(trainer.summary().warm_start_unit_term));
+    EXPECT_EQ(trainer.summary().restart_unit_term.size(), 1u);
     const auto segs = model.segment(train_steps);
     int same = 0, labelled = 0;
     for (std::size_t i = 0; i < train.size(); ++i) {
