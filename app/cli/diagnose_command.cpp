@@ -20,6 +20,7 @@
 #include "engine/render/rgba_image.hpp"
 #include "engine/writing/writing_trial.hpp"
 #include "engine/writing_view/writing_trial_image.hpp"
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/tasks/diagnosis.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
@@ -35,7 +36,7 @@ struct DiagnoseArgs {
   std::string png_dir;
   std::string out;
   unsigned long long seed = 0;
-  std::string expertise = "alg2";
+  ExpertiseMode expertise = ExpertiseMode::Alg2;
   std::vector<std::string> trials;
 };
 
@@ -93,8 +94,7 @@ int run(const DiagnoseArgs& args) {
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   Diagnosis diagnosis;
   try {
-    diagnosis = diagnose_trials(*kit, trials, args.seed,
-                                args.expertise == "quality-aware" ? ExpertiseMode::QualityAware : ExpertiseMode::Alg2);
+    diagnosis = diagnose_trials(*kit, trials, args.seed, args.expertise);
   } catch (const InputError& e) {
     // "trial 2: ..." -> name the file instead.
     const std::string message = e.what();
@@ -123,8 +123,8 @@ CommandRunner setup_diagnose(CLI::App& sub) {
   sub.add_option("--expertise", args->expertise,
                  "alg2: the paper's Alg. 2 (skills missing from the learner's trials); quality-aware: Alg. 2 plus "
                  "how well each skill was done (docs/skills.md)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"alg2", "quality-aware"}));
+      ->default_str("alg2")
+      ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
   sub.add_option("--png", args->png_dir, "Directory to draw each drill's ghost path into (drill_N.png)");
   sub.add_option("--out", args->out, "Write the JSON here instead of standard output");
   sub.add_option("trials", args->trials, "Trial files of one learner (JSON)")->required();

@@ -23,6 +23,7 @@
 #include "engine/core/error.hpp"
 #include "engine/writing/step_data.hpp"
 #include "engine/writing/word_generator.hpp"
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/learners/parking/drive_skill_agreement.hpp"
 #include "teaching/skills/compile_config.hpp"
 #include "teaching/skills/compile_extractor.hpp"
@@ -49,7 +50,7 @@ struct EvaluateArgs {
   bool robustness = false;
   bool planted = false;
   int learners = 20;
-  std::string expertise = "alg2";
+  ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
 };
 
@@ -129,12 +130,12 @@ int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
   std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
                args.learners, args.learners, static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
-  const ExpertiseMode mode = args.expertise == "quality-aware" ? ExpertiseMode::QualityAware : ExpertiseMode::Alg2;
   const PlantedWeaknessReport report =
-      measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed, mode);
+      measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed, args.expertise);
   std::printf("%s, %d learners per letter, seed %llu, %s expertise:\n%s",
               args.time_heuristic ? "time heuristic" : args.model.c_str(), args.learners,
-              static_cast<unsigned long long>(seed), args.expertise.c_str(), planted_weakness_table(report).c_str());
+              static_cast<unsigned long long>(seed), expertise_mode_name(args.expertise).c_str(),
+              planted_weakness_table(report).c_str());
   std::fprintf(stderr, "evaluate-skills: %.1f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;
@@ -220,8 +221,8 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
   auto* expertise = sub.add_option("--expertise", args->expertise,
                                    "With --planted-weaknesses: alg2 (the paper's Alg. 2, the app's default) or "
                                    "quality-aware (Alg. 2 plus how well each skill was done)")
-                        ->capture_default_str()
-                        ->check(CLI::IsMember({"alg2", "quality-aware"}));
+                        ->default_str("alg2")
+                        ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
   expertise->needs(planted);
   planted->excludes(sub.get_option("--robustness"));
   return [args] { return run(*args); };

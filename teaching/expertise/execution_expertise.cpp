@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "engine/core/error.hpp"
@@ -54,7 +55,34 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
   return best;
 }
 
+// Each segment's reward relative to the learner's median segment: what stands out from how this learner
+// does everything else.
+std::vector<ExecutionTrial> relative_to_median(std::vector<ExecutionTrial> trials) {
+  std::vector<double> rewards;
+  for (const ExecutionTrial& t : trials)
+    for (const SegmentExecution& s : t.segments) rewards.push_back(s.reward);
+  if (rewards.empty()) return trials;
+  const auto middle = rewards.begin() + static_cast<std::ptrdiff_t>(rewards.size() / 2);
+  std::nth_element(rewards.begin(), middle, rewards.end());
+  const double median = *middle;
+  for (ExecutionTrial& t : trials)
+    for (SegmentExecution& s : t.segments) s.reward = std::min(0.0, s.reward - median);
+  return trials;
+}
+
 }  // namespace
+
+const std::map<std::string, ExpertiseMode>& expertise_modes_by_name() {
+  static const std::map<std::string, ExpertiseMode> modes{{"alg2", ExpertiseMode::Alg2},
+                                                          {"quality-aware", ExpertiseMode::QualityAware}};
+  return modes;
+}
+
+const std::string& expertise_mode_name(ExpertiseMode mode) {
+  for (const auto& [name, m] : expertise_modes_by_name())
+    if (m == mode) return name;
+  throw std::logic_error("expertise mode without a name");
+}
 
 const char* target_reason_words(TargetReason reason) {
   switch (reason) {
@@ -68,13 +96,14 @@ const char* target_reason_words(TargetReason reason) {
   return "missing";
 }
 
-ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
+ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given, int num_skills,
                                                 int num_targets, ExpertiseMode mode) {
   std::vector<ExpertiseTrial> plain;
-  for (std::size_t t = 0; t < trials.size(); ++t) {
-    check(trials[t], t);
-    plain.push_back(trials[t].trial);
+  for (std::size_t t = 0; t < given.size(); ++t) {
+    check(given[t], t);
+    plain.push_back(given[t].trial);
   }
+  const std::vector<ExecutionTrial> trials = relative_to_median(given);
   ExecutionExpertise out;
   out.estimate = estimate_expertise(plain, num_skills, num_targets);
   if (mode == ExpertiseMode::QualityAware) {

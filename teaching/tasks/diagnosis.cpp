@@ -86,7 +86,7 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
                       {"skills", segmentation_json(t.student)},
                       {"expert_skills", segmentation_json(t.expert)}});
   out["trials"] = std::move(trials);
-  out["expertise_mode"] = diagnosis.mode == ExpertiseMode::Alg2 ? "alg2" : "quality-aware";
+  out["expertise_mode"] = expertise_mode_name(diagnosis.mode);
   out["expertise"] = expertise_to_json(diagnosis.expertise);
   Json targets = Json::array();
   for (std::size_t k = 0; k < diagnosis.expertise.targets.size(); ++k) {

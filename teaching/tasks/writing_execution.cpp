@@ -45,13 +45,24 @@ double writing_execution_reward(const StepSequence& expert, const StepSequence& 
   std::vector<TracePoint3> expert_part, learner_part;
   for (int t = std::max(begin, 0); t < end && t < static_cast<int>(e.size()); ++t)
     expert_part.push_back(e[static_cast<std::size_t>(t)]);
-  int last = -1;
+  // The learner's part is moved by the mean offset of its aligned pairs: the segment's shape is compared,
+  // not where earlier letters left the pen.
+  double dx = 0.0, dy = 0.0;
+  int pairs = 0, last = -1;
   for (const auto& [i, j] : path) {
-    if (i < begin || i >= end || j >= static_cast<int>(l.size()) || j == last) continue;
+    if (i < begin || i >= end || i >= static_cast<int>(e.size()) || j >= static_cast<int>(l.size())) continue;
+    dx += l[static_cast<std::size_t>(j)][0] - e[static_cast<std::size_t>(i)][0];
+    dy += l[static_cast<std::size_t>(j)][1] - e[static_cast<std::size_t>(i)][1];
+    ++pairs;
+    if (j == last) continue;
     learner_part.push_back(l[static_cast<std::size_t>(j)]);
     last = j;
   }
   if (expert_part.empty()) return 0.0;
+  for (TracePoint3& p : learner_part) {
+    p[0] -= dx / std::max(pairs, 1);
+    p[1] -= dy / std::max(pairs, 1);
+  }
   return mean_credit(expert_part, learner_part) * mean_credit(learner_part, expert_part) - 1.0;
 }
 

@@ -6,8 +6,11 @@
 // compared as writing_score.hpp compares ink: recall = mean credit of the expert's points (distance to the
 // nearest aligned learner point), precision = mean credit of the learner's aligned points (distance to the
 // nearest expert point of the segment), credit 1 within the score's tolerance (3 px) falling linearly to 0
-// at its cutoff (8 px); the segment's score is recall * precision - 1. Pen positions are absolute (the
-// learner traces on the expert's canvas), so no frame change is needed.
+// at its cutoff (8 px); the segment's score is recall * precision - 1. The learner's points are first moved
+// by the mean offset of the aligned pairs: the segment's shape is scored, not where it lies (an earlier
+// letter's drift, or a word written a little higher, is not this skill's error; parking likewise compares
+// motion from each part's own start). Measured: scoring absolute positions let the short connectors, which
+// carry the drift of the letters before them, dominate every diagnosis (docs/skills.md).
 #include <vector>
 
 #include "teaching/expertise/trace_alignment.hpp"

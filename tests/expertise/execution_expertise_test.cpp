@@ -31,11 +31,12 @@ TEST(ExecutionExpertise, Alg2ModeIsAlg2Exactly) {
   EXPECT_EQ(e.why[1].delta, 0.0);
 }
 
-TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorOverItsPosition) {
+TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorBeyondTheLearnersMedianOverItsPosition) {
   const ExecutionExpertise e = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware);
-  EXPECT_DOUBLE_EQ(e.estimate.expertise[0], -0.01);
-  EXPECT_DOUBLE_EQ(e.estimate.expertise[1], -0.9 / 2);
-  EXPECT_DOUBLE_EQ(e.estimate.expertise[2], -0.3 / 3 - 0.2 / 3);
+  // The learner's median segment reward is -0.2: only what is worse than that counts.
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[0], 0.0);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[1], -0.7 / 2);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[2], -0.3 / 3);
   // Skill 1 was shown (Alg. 2 never sees it) but done with a large error: now the first target.
   ASSERT_EQ(e.estimate.targets, (std::vector<int>{1, 2}));
   EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
@@ -46,6 +47,21 @@ TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorOverItsPosition) {
   EXPECT_STREQ(target_reason_words(e.why[0].reason), "done with a large error here");
 }
 
+TEST(ExecutionExpertise, AHandThatDoesEverySkillEquallyBadlyIsChargedNoExecutionPenalty) {
+  ExecutionTrial t = trial();
+  t.trial.student = t.trial.expert;  // nothing missing
+  for (SegmentExecution& s : t.segments) s.reward = -0.6;
+  ExecutionTrial other = t;
+  other.segments[2].reward = -0.95;  // one skill done worse than the rest
+  const ExecutionExpertise even = estimate_execution_expertise({t, t}, 3, 2, ExpertiseMode::QualityAware);
+  for (double e : even.estimate.expertise) EXPECT_DOUBLE_EQ(e, 0.0);
+  const ExecutionExpertise uneven = estimate_execution_expertise({t, other}, 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_DOUBLE_EQ(uneven.estimate.expertise[2], -0.35 / 3);
+  EXPECT_EQ(uneven.estimate.targets.front(), 2);
+  EXPECT_EQ(uneven.why.front().reason, TargetReason::LargeError);
+  EXPECT_EQ(uneven.why.front().trial, 1);
+}
+
 TEST(ExecutionExpertise, RefusesScoresNotParallelToTheExpertOrPositive) {
   ExecutionTrial t = trial();
   t.segments.pop_back();
@@ -53,6 +69,13 @@ TEST(ExecutionExpertise, RefusesScoresNotParallelToTheExpertOrPositive) {
   t = trial();
   t.segments[0].reward = 0.1;
   EXPECT_THROW(estimate_execution_expertise({t}, 3, 2, ExpertiseMode::QualityAware), InputError);
+}
+
+TEST(ExecutionExpertise, EveryModeHasOneNameThatParsesBack) {
+  EXPECT_EQ(expertise_mode_name(ExpertiseMode::Alg2), "alg2");
+  EXPECT_EQ(expertise_mode_name(ExpertiseMode::QualityAware), "quality-aware");
+  ASSERT_EQ(expertise_modes_by_name().size(), 2u);
+  for (const auto& [name, mode] : expertise_modes_by_name()) EXPECT_EQ(expertise_mode_name(mode), name);
 }
 
 }  // namespace

@@ -26,16 +26,32 @@ StepAlignment writing_diagonal(int n) {
   return path;
 }
 
-TEST(WritingExecution, InkWithinTheToleranceScoresZeroAndBeyondTheCutoffMinusOne) {
+// A learner line bent at step `knee` by `rise` px per step (a different shape from the expert's line).
+StepSequence bent_line(int n, double y0, int knee, double rise) {
+  StepSequence s = pen_line(n, y0);
+  for (int t = knee; t < n; ++t)
+    s.states[static_cast<std::size_t>(t) * 13 + 1] += static_cast<float>(rise * (t - knee));
+  return s;
+}
+
+TEST(WritingExecution, TheSameShapeAnywhereScoresZero) {
   const StepSequence expert = pen_line(20, 50.0);
   EXPECT_DOUBLE_EQ(writing_execution_reward(expert, expert, writing_diagonal(20), 5, 15), 0.0);
-  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 52.0), writing_diagonal(20), 5, 15),
-                   0.0);  // 2 px <= 3
-  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 60.0), writing_diagonal(20), 5, 15),
-                   -1.0);  // 10 px >= 8
-  const double half =
-      writing_execution_reward(expert, pen_line(20, 55.5), writing_diagonal(20), 5, 15);  // 5.5 px: credit 1/2
-  EXPECT_NEAR(half, 0.25 - 1.0, 1e-6);
+  // Moved by 10 px (beyond the 8 px cutoff), e.g. by an earlier letter's drift: the segment's shape is right.
+  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, pen_line(20, 60.0), writing_diagonal(20), 5, 15), 0.0);
+}
+
+TEST(WritingExecution, InkOffTheShapeLosesCreditBetweenTheToleranceAndTheCutoff) {
+  const StepSequence expert = pen_line(20, 50.0);
+  // Half the segment's points 11 px off the line's direction, half on it: the mean offset (moved away) is
+  // 5.5 px, so each half lies 5.5 px from the other: credit 1/2 everywhere.
+  StepSequence step = pen_line(20, 50.0);
+  for (int t = 10; t < 20; ++t) step.states[static_cast<std::size_t>(t) * 13 + 1] = 61.0f;
+  EXPECT_NEAR(writing_execution_reward(expert, step, writing_diagonal(20), 5, 15), 0.25 - 1.0, 0.05);
+  // A line that bends away by 2 px per step: its far end is well beyond the cutoff.
+  EXPECT_LT(writing_execution_reward(expert, bent_line(20, 50.0, 5, 2.0), writing_diagonal(20), 5, 15), -0.4);
+  // A slight bend within the tolerance costs nothing.
+  EXPECT_DOUBLE_EQ(writing_execution_reward(expert, bent_line(20, 50.0, 5, 0.2), writing_diagonal(20), 5, 15), 0.0);
 }
 
 }  // namespace
