@@ -1,7 +1,7 @@
 #pragma once
 // Realistic parking drivers: an expert drive as a novice would reproduce it with a real input device, so
-// that skill models, diagnoses and tests meet the input real learners give (issue: the diagnosis must hold
-// on novice learners, not only on near-perfect copies of the expert).
+// that skill models, diagnoses and tests meet the input real learners give (the diagnosis must hold on
+// novice learners, not only on near-perfect copies of the expert).
 //
 // Spec. The driver follows the expert's control-rate actions open loop (no re-planning), with
 //  * a reaction delay: at time t it does what the expert did at t - delay (neutral before the start);
