@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,7 @@ struct DiagnoseArgs {
   std::string png_dir;
   std::string out;
   unsigned long long seed = 0;
-  ExpertiseMode expertise = ExpertiseMode::Alg2;
+  std::optional<ExpertiseMode> expertise;  // default: the task's learners_expertise()
   std::vector<std::string> trials;
 };
 
@@ -94,7 +95,7 @@ int run(const DiagnoseArgs& args) {
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   Diagnosis diagnosis;
   try {
-    diagnosis = diagnose_trials(*kit, trials, args.seed, args.expertise);
+    diagnosis = diagnose_trials(*kit, trials, args.seed, args.expertise.value_or(kit->learners_expertise()));
   } catch (const InputError& e) {
     // "trial 2: ..." -> name the file instead.
     const std::string message = e.what();
@@ -122,8 +123,8 @@ CommandRunner setup_diagnose(CLI::App& sub) {
   sub.add_option("--seed", args->seed, "Seed of the drills' random expert segments (default 0)");
   sub.add_option("--expertise", args->expertise,
                  "alg2: the paper's Alg. 2 (skills missing from the learner's trials); quality-aware: Alg. 2 plus "
-                 "how well each skill was done (docs/skills.md)")
-      ->default_str("alg2")
+                 "how well each skill was done (docs/skills.md). Default: the trainer's for the task (parking alg2, "
+                 "writing quality-aware)")
       ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
   sub.add_option("--png", args->png_dir, "Directory to draw each drill's ghost path into (drill_N.png)");
   sub.add_option("--out", args->out, "Write the JSON here instead of standard output");

@@ -116,7 +116,7 @@ ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial
         const auto m = static_cast<std::size_t>(et.trial.expert.segments[k].skill);
         const double delta = -kExecutionWeight * q / j;
         out.estimate.expertise[m] -= delta;
-        out.estimate.contributions[m].push_back({static_cast<int>(t), et.trial.scenario, j, q, delta});
+        out.estimate.contributions[m].push_back({static_cast<int>(t), et.trial.scenario, j, q, delta, true});
       }
     }
     rank_expertise(out.estimate, num_targets);

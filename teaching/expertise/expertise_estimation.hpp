@@ -34,6 +34,9 @@ struct ExpertiseContribution {
   int position = 0;     // j: 1-based position of the skill in the expert's sequence
   double reward = 0.0;  // r_ξ(τ^s_ξ)
   double delta = 0.0;   // Δ_m = −reward / j >= 0 (E_m = −Σ delta)
+  // Quality-aware expertise (execution_expertise.hpp): the skill was shown but done worse than the learner's
+  // other skills; then `reward` is that segment's execution score and delta = −w·reward / j.
+  bool execution = false;
   bool operator==(const ExpertiseContribution&) const = default;
 };
 

@@ -27,7 +27,8 @@ Json expertise_to_json(const ExpertiseEstimate& estimate) {
                       {"scenario", c.scenario},
                       {"position", c.position},
                       {"reward", c.reward},
-                      {"delta", c.delta}});
+                      {"delta", c.delta},
+                      {"execution", c.execution}});
     }
     contributions.push_back(std::move(list));
   }
@@ -60,8 +61,10 @@ ExpertiseEstimate expertise_from_json(const JsonView& view) {
       const JsonView c = per_skill.at(i);
       const long long position = c.at("position").integer();
       if (position < 1) c.at("position").fail("positions count from 1");
+      const auto execution = c.find("execution");  // absent in records written before quality-aware expertise
       list.push_back({static_cast<int>(c.at("trial").integer()), static_cast<int>(c.at("scenario").integer()),
-                      static_cast<int>(position), c.at("reward").number(), c.at("delta").number()});
+                      static_cast<int>(position), c.at("reward").number(), c.at("delta").number(),
+                      execution && execution->boolean()});
     }
     out.contributions.push_back(std::move(list));
   }

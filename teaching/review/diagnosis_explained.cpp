@@ -25,11 +25,13 @@ TestTrial test_trial_of(const SessionReview& review, const records::StoredTrial&
     if (pool[i].scenario == scenario) {
       test.scenario = static_cast<int>(i);
       test.expert = pool[i].skills;
+      test.expert_steps = pool[i].steps;
       return test;
     }
   // Not in the pool (another pool version): segment the expert's trial for it now.
   test.scenario = -1;
-  test.expert = review.kit().extractor().extract(review.kit().steps_of(review.expert_for(scenario)));
+  test.expert_steps = review.kit().steps_of(review.expert_for(scenario));
+  test.expert = review.kit().extractor().extract(test.expert_steps);
   return test;
 }
 

@@ -1,11 +1,21 @@
 #include "teaching/sessions/session_analysis.hpp"
 
-namespace sc {
+#include <algorithm>
+#include <tuple>
+#include <utility>
 
-std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vector<TestTrial>& trials) {
+namespace sc {
+namespace {
+
+std::vector<StepSequence> learner_steps(const TaskKit& kit, const std::vector<TestTrial>& trials) {
   std::vector<StepSequence> steps;
   steps.reserve(trials.size());
   for (const TestTrial& t : trials) steps.push_back(kit.steps_of(t.trial));
+  return steps;
+}
+
+std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vector<TestTrial>& trials,
+                                             const std::vector<StepSequence>& steps) {
   const std::vector<Segmentation> learner = kit.extractor().extract_all(steps);
   std::vector<ExpertiseTrial> out;
   out.reserve(trials.size());
@@ -14,9 +24,36 @@ std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vect
   return out;
 }
 
+}  // namespace
+
+std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vector<TestTrial>& trials) {
+  return expertise_trials(kit, trials, learner_steps(kit, trials));
+}
+
+ExecutionTrial execution_trial(const TaskKit& kit, ExpertiseTrial trial, const StepSequence& expert,
+                               const StepSequence& learner, ExpertiseMode mode) {
+  ExecutionTrial out{std::move(trial), {}};
+  const StepAlignment path = align_traces(kit.trace_points(expert), kit.trace_points(learner));
+  for (const SkillSegment& s : out.trial.expert.segments) {
+    SegmentExecution e;
+    std::tie(e.learner_begin, e.learner_end) = aligned_span(path, s.begin, s.end);
+    if (mode == ExpertiseMode::QualityAware)
+      e.reward = std::min(kit.execution_reward(expert, learner, path, s.begin, s.end), 0.0);
+    out.segments.push_back(e);
+  }
+  return out;
+}
+
 ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTrial>& trials) {
-  return estimate_expertise(expertise_trials(kit, trials), kit.extractor().num_skills(),
-                            kit.curriculum_config().drills.num_targets);
+  const int skills = kit.extractor().num_skills(), targets = kit.curriculum_config().drills.num_targets;
+  const std::vector<StepSequence> steps = learner_steps(kit, trials);
+  std::vector<ExpertiseTrial> plain = expertise_trials(kit, trials, steps);
+  const ExpertiseMode mode = kit.learners_expertise();
+  if (mode == ExpertiseMode::Alg2) return estimate_expertise(plain, skills, targets);
+  std::vector<ExecutionTrial> evidence;
+  for (std::size_t i = 0; i < trials.size(); ++i)
+    evidence.push_back(execution_trial(kit, std::move(plain[i]), trials[i].expert_steps, steps[i], mode));
+  return estimate_execution_expertise(evidence, skills, targets, mode).estimate;
 }
 
 std::optional<SkillExample> example_of_skill(const std::vector<ExpertDemo>& pool, int skill) {

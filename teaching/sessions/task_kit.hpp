@@ -12,6 +12,7 @@
 #include "engine/core/json_file.hpp"
 #include "teaching/curricula/curriculum.hpp"
 #include "teaching/drills/drill_plan.hpp"
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/expertise/trace_alignment.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
@@ -72,6 +73,9 @@ class TaskKit {
   // <= 0, 0 when the learner's part repeats the expert's.
   virtual double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
                                   int begin, int end) const = 0;
+  // The expertise estimate the trainer diagnoses learners with: the one that measured better on this task's
+  // planted weaknesses (docs/skills.md). Research conditions and `diagnose --expertise` may choose either.
+  virtual ExpertiseMode learners_expertise() const = 0;
 };
 
 }  // namespace sc

@@ -139,7 +139,8 @@ CurriculumInputs TrainingSession::curriculum_inputs() const {
     std::vector<TestTrial> trials;
     for (std::size_t i = 0; i < pretest_trials_.size(); ++i) {
       const int pool = pretest_pool_.at(i);
-      trials.push_back({pool, kit_.expert_pool()[static_cast<std::size_t>(pool)].skills, pretest_trials_[i]});
+      const ExpertDemo& expert = kit_.expert_pool()[static_cast<std::size_t>(pool)];
+      trials.push_back({pool, expert.skills, pretest_trials_[i], expert.steps});
     }
     inputs.pretest = diagnose_trials(kit_, trials);
   }
@@ -294,13 +295,14 @@ RoundSummary TrainingSession::summary() const {
   for (std::size_t i = 0; i < pretest_trials_.size(); ++i) {
     pre.push_back(kit_.reward_of(pretest_trials_[i]));
     const int pool = pretest_pool_[i];
-    pre_trials.push_back({pool, kit_.expert_pool()[static_cast<std::size_t>(pool)].skills, pretest_trials_[i]});
+    const ExpertDemo& expert = kit_.expert_pool()[static_cast<std::size_t>(pool)];
+    pre_trials.push_back({pool, expert.skills, pretest_trials_[i], expert.steps});
   }
   const RoundState& st = state(round());
   const auto& experts = eval_experts();
   for (std::size_t i = 0; i < st.eval.size(); ++i) {
     eval.push_back(kit_.reward_of(st.eval[i]));
-    eval_trials_list.push_back({static_cast<int>(i), experts.at(i).skills, st.eval[i]});
+    eval_trials_list.push_back({static_cast<int>(i), experts.at(i).skills, st.eval[i], experts.at(i).steps});
   }
   return summarize_round(round(), pre, eval, diagnose_trials(kit_, pre_trials), diagnose_trials(kit_, eval_trials_list),
                          practice_per_skill(), static_cast<int>(st.practice.size()));

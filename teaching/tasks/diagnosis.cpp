@@ -1,34 +1,13 @@
 #include "teaching/tasks/diagnosis.hpp"
 
-#include <algorithm>
-#include <tuple>
-
 #include "engine/core/error.hpp"
 #include "teaching/drills/drill_builder.hpp"
 #include "teaching/drills/drill_plan_json.hpp"
 #include "teaching/expertise/expertise_json.hpp"
+#include "teaching/sessions/session_analysis.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 
 namespace sc {
-
-namespace {
-
-// Alg. 2's evidence of one trial plus each expert segment's aligned learner steps and execution score.
-ExecutionTrial execution_trial(const TaskKit& kit, int index, const DiagnosedTrial& d, const StepSequence& expert,
-                               const StepSequence& learner, ExpertiseMode mode) {
-  ExecutionTrial out{{index, d.expert, d.student, d.reward}, {}};
-  const StepAlignment path = align_traces(kit.trace_points(expert), kit.trace_points(learner));
-  for (const SkillSegment& s : d.expert.segments) {
-    SegmentExecution e;
-    std::tie(e.learner_begin, e.learner_end) = aligned_span(path, s.begin, s.end);
-    if (mode == ExpertiseMode::QualityAware)
-      e.reward = std::min(kit.execution_reward(expert, learner, path, s.begin, s.end), 0.0);
-    out.segments.push_back(e);
-  }
-  return out;
-}
-
-}  // namespace
 
 Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed, ExpertiseMode mode) {
   Diagnosis out;
@@ -53,7 +32,8 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
     const StepSequence learner_steps = kit.steps_of(trial);
     d.student = kit.extractor().extract(learner_steps);
     d.reward = kit.reward_of(trial);
-    evidence.push_back(execution_trial(kit, static_cast<int>(i), d, expert_steps, learner_steps, mode));
+    evidence.push_back(
+        execution_trial(kit, {static_cast<int>(i), d.expert, d.student, d.reward}, expert_steps, learner_steps, mode));
     out.trials.push_back(std::move(d));
   }
   const CurriculumConfig config = kit.curriculum_config();

@@ -63,6 +63,8 @@ class ParkingKit final : public TaskKit {
   // (x, y, speed) of the car; the reward's weighted distance between the learner's and the expert's motion,
   // each seen from where its part starts (parking_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  // Alg. 2: quality-aware expertise also left most weak-steering learners quiet (docs/skills.md).
+  ExpertiseMode learners_expertise() const override { return ExpertiseMode::Alg2; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;
 

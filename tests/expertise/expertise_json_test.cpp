@@ -25,6 +25,20 @@ TEST(ExpertiseJson, RoundTrips) {
   EXPECT_EQ(back.targets, e.targets);
 }
 
+TEST(ExpertiseJson, ExecutionPenaltiesKeepTheirKindAndOlderRecordsReadAsMissing) {
+  ExpertiseEstimate e = estimate_expertise({{3, segmentation_of({0, 1}), segmentation_of({0}), -0.5}}, 2, 2);
+  e.contributions[0].push_back({0, 3, 1, -0.4, 0.4, true});
+  Json doc = expertise_to_json(e);
+  const ExpertiseEstimate back = expertise_from_json(JsonView(doc, "diag.json"));
+  EXPECT_EQ(back.contributions, e.contributions);
+  EXPECT_TRUE(back.contributions[0].back().execution);
+  for (Json& per_skill : doc["contributions"])
+    for (Json& c : per_skill) c.erase("execution");  // a record written before the field existed
+  const ExpertiseEstimate old = expertise_from_json(JsonView(doc, "diag.json"));
+  for (const auto& per_skill : old.contributions)
+    for (const ExpertiseContribution& c : per_skill) EXPECT_FALSE(c.execution);
+}
+
 TEST(ExpertiseJson, BadDocumentsNameThePath) {
   Json doc = expertise_to_json(estimate_expertise({{0, segmentation_of({0, 1}), segmentation_of({}), -1.0}}, 2, 2));
   doc["ranking"][0] = 9;

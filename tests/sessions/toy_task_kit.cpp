@@ -102,7 +102,7 @@ Json toy_practice_trial(const PlayableDrill& drill, int forget, int instead) {
   return Json{{"task", "toy"}, {"scenario", {{"id", -1}}}, {"actions", mine}, {"reference", reference}};
 }
 
-ToyTaskKit::ToyTaskKit(int pool_size) {
+ToyTaskKit::ToyTaskKit(int pool_size, ExpertiseMode expertise) : expertise_(expertise) {
   for (int id = 0; id < pool_size; ++id) {
     ExpertDemo demo;
     demo.scenario = Json{{"id", id}};

@@ -23,7 +23,7 @@ Json toy_practice_trial(const PlayableDrill& drill, int forget, int instead);
 
 class ToyTaskKit final : public TaskKit {
  public:
-  explicit ToyTaskKit(int pool_size = 8);
+  explicit ToyTaskKit(int pool_size = 8, ExpertiseMode expertise = ExpertiseMode::Alg2);
   std::string task() const override { return "toy"; }
   const SkillExtractor& extractor() const override;
   std::string extractor_notice() const override { return {}; }
@@ -40,12 +40,14 @@ class ToyTaskKit final : public TaskKit {
   double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
   // The position is the 1-D car's (state 0); an aligned step's execution error is 1 when the positions differ.
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  ExpertiseMode learners_expertise() const override { return expertise_; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;
 
   mutable int fresh_calls = 0;  // how often fresh_scenarios ran (tests check caching)
 
  private:
+  ExpertiseMode expertise_;
   std::vector<ExpertDemo> pool_;
   std::unique_ptr<DrillProjector> projector_;
 };

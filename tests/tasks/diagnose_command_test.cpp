@@ -50,6 +50,7 @@ TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
   ASSERT_EQ(r.status, 0) << r.output;
   const Json d = read_json_file(out);
   EXPECT_EQ(d.at("task"), "writing");
+  EXPECT_EQ(d.at("expertise_mode"), "quality-aware");  // the trainer's default for writing
   ASSERT_EQ(d.at("trials").size(), 1u);
   EXPECT_EQ(d.at("trials")[0].at("file"), trial.string());
   EXPECT_LT(d.at("trials")[0].at("reward").get<double>(), -0.5);  // a straight line is far from the word
