@@ -10,6 +10,7 @@
 #include "app/cli/command_registry.hpp"
 #include "app/gui/screens/review_report_writer.hpp"
 #include "teaching/records/data_dir.hpp"
+#include "teaching/review/session_filter.hpp"
 
 namespace sc::cli {
 namespace {
@@ -31,8 +32,13 @@ CommandRunner setup_report(CLI::App& sub) {
   sub.add_option("--store", options->store, "Instead of --data-dir: a data directory or a class's postgresql:// URL")
       ->excludes("--data-dir");
   sub.add_option("--learner", options->learner, "Learner's name")->required();
-  sub.add_option("--from", options->from, "Only sessions started on or after this ISO date/time (e.g. 2026-12-01)");
-  sub.add_option("--to", options->to, "Only sessions started on or before this ISO date/time (e.g. 2026-12-03)");
+  const auto iso_date = [](const std::string& v) {
+    return review::valid_date_bound(v) ? std::string() : "not an ISO date (YYYY-MM-DD, or YYYY-MM-DDTHH:MM)";
+  };
+  sub.add_option("--from", options->from, "Only sessions started on or after this ISO date/time (e.g. 2026-12-01)")
+      ->check(iso_date);
+  sub.add_option("--to", options->to, "Only sessions started on or before this ISO date/time (e.g. 2026-12-03)")
+      ->check(iso_date);
   CLI::Option* session =
       sub.add_option("--session", options->session, "Only this session id (default: every session of the learner)");
   sub.add_option("--out", options->out, "Folder to write the report into (created)")->required();

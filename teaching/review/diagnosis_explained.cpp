@@ -64,6 +64,7 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
   DiagnosisExplanation out;
   out.round = 1;
   out.extractor = stored.extractor;
+  out.mode = review.kit().learners_expertise();
   out.pretest_trials = static_cast<int>(pretest.size());
   out.recomputed_targets = now.targets;
   out.stored_targets = stored_targets;
@@ -81,7 +82,7 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
     s.expertise = now.expertise[static_cast<std::size_t>(m)];
     s.occurrences = now.occurrences[static_cast<std::size_t>(m)];
     for (const ExpertiseContribution& c : now.contributions[static_cast<std::size_t>(m)])
-      s.missed.push_back({pretest[static_cast<std::size_t>(c.trial)]->seq, c.position, c.reward, c.delta});
+      s.missed.push_back({pretest[static_cast<std::size_t>(c.trial)]->seq, c.position, c.reward, c.delta, c.execution});
     out.skills.push_back(std::move(s));
   }
   return out;

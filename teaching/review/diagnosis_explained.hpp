@@ -1,21 +1,24 @@
 #pragma once
-// "Diagnosis explained": why the trainer chose the skills it drilled in round 1. Alg. 2 is recomputed
-// (teaching/expertise) from the stored pre-test trials against the expert's segmentation of the same
-// scenarios, and for each targeted skill the pre-test trials that missed it are listed with their Δ
-// (Δ = −r / j: r the trial's reward, j the skill's position in the expert's sequence). The recomputed
-// expertise is compared with the stored diagnosis, so a model or extractor change since the session shows.
+// "Diagnosis explained": why the trainer chose the skills it drilled in round 1. The kit's expertise (Alg. 2,
+// or quality-aware for writing: TaskKit::learners_expertise) is recomputed (teaching/expertise) from the
+// stored pre-test trials against the expert's segmentation of the same scenarios, and for each targeted skill
+// the pre-test trials that missed it (or, quality-aware, did it badly) are listed with their Δ
+// (Δ = −r / j: r the trial's reward, j the skill's position in the expert's sequence; done badly: −q / j). The
+// recomputed expertise is compared with the stored diagnosis, so a model or extractor change since the session shows.
 #include <string>
 #include <vector>
 
+#include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/review/trial_review.hpp"
 
 namespace sc::review {
 
 struct MissedSkillTrial {
-  int seq = 0;          // the pre-test trial
-  int position = 0;     // j, 1-based position of the skill in the expert's sequence
-  double reward = 0.0;  // r of the learner's trial
-  double delta = 0.0;   // Δ = −r / j
+  int seq = 0;             // the pre-test trial
+  int position = 0;        // j, 1-based position of the skill in the expert's sequence
+  double reward = 0.0;     // r of the learner's trial (execution: the segment's execution score q)
+  double delta = 0.0;      // Δ = −r / j
+  bool execution = false;  // quality-aware expertise: shown but done badly, not missing
 };
 
 struct SkillExplanation {
@@ -34,6 +37,7 @@ struct DiagnosisExplanation {
   int pretest_trials = 0;
   bool matches_stored = false;  // recomputed expertise equals the stored vector (to 1e-9) with the same targets
   std::string extractor;        // the stored diagnosis's extractor name
+  ExpertiseMode mode = ExpertiseMode::Alg2;  // the kit's learners_expertise(), with which it is recomputed
 };
 
 // Throws InputError when the session has no pre-test trials or no round-1 diagnosis.

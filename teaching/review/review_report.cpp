@@ -70,23 +70,28 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
     return;
   }
   const auto& d = *s.diagnosis;
-  h << "<p class=note>Alg. 2 recomputed from the " << d.pretest_trials << " pre-test trials with the "
-    << html_escape(d.extractor)
+  h << "<p class=note>" << (d.mode == ExpertiseMode::Alg2 ? "Alg. 2" : "Quality-aware expertise")
+    << " recomputed from the " << d.pretest_trials << " pre-test trials with the " << html_escape(d.extractor)
     << " extractor: a skill the expert used (at position j of its sequence) that the "
-       "learner's trial lacks costs &Delta; = &minus;r / j, r the trial's reward. "
+       "learner's trial lacks costs &Delta; = &minus;r / j, r the trial's reward"
+    << (d.mode == ExpertiseMode::Alg2 ? ". "
+                                      : "; one done worse than the learner's other skills (\"done badly\") costs "
+                                        "&Delta; = &minus;q / j, q that part's execution score below the learner's "
+                                        "median. ")
     << (d.matches_stored
             ? "The recomputation matches the stored diagnosis."
             : "<b>The recomputation differs from the stored diagnosis</b> (the model or data changed since).")
-    << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed in pre-test "
-       "trials (&Delta;)</th></tr>\n";
+    << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed or done "
+       "badly in "
+       "pre-test trials (&Delta;)</th></tr>\n";
   for (const auto& skill : d.skills) {
     h << "<tr><td>" << skill.skill << ": " << html_escape(skill.description) << "</td><td class=num>"
       << number(skill.expertise) << "</td><td class=num>" << skill.occurrences << "&times;</td><td>";
     if (skill.missed.empty()) h << "none";
     for (std::size_t i = 0; i < skill.missed.size(); ++i) {
       const auto& m = skill.missed[i];
-      h << (i ? "; " : "") << "trial " << m.seq << " (j=" << m.position << ", r=" << number(m.reward)
-        << ", &Delta;=" << number(m.delta) << ")";
+      h << (i ? "; " : "") << "trial " << m.seq << (m.execution ? " done badly" : "") << " (j=" << m.position
+        << (m.execution ? ", q=" : ", r=") << number(m.reward) << ", &Delta;=" << number(m.delta) << ")";
     }
     h << "</td></tr>\n";
   }

@@ -109,7 +109,7 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
   EXPECT_EQ(count(html, "<link"), 0u);
   EXPECT_NE(html.find("SkillCoach review: Ada"), std::string::npos);
   EXPECT_NE(html.find("The recomputation matches the stored diagnosis."), std::string::npos);
-  EXPECT_NE(html.find("Missed in pre-test trials"), std::string::npos);
+  EXPECT_NE(html.find("Missed or done badly in pre-test trials"), std::string::npos);
 }
 
 TEST_F(ReportCommand, OneSessionOnly) {
@@ -134,6 +134,11 @@ TEST_F(ReportCommand, DateRangeKeepsTheSessionsStartedWithinIt) {
   fs::remove_all(out);
   run = test::run_skillcoach(base + " --from 2024-05-02");
   EXPECT_NE(run.output.find("0 session(s)"), std::string::npos) << run.output;
+  // A bound that is not a date is refused, not silently ignored (it would report every session).
+  run = test::run_skillcoach(base + " --to 2024-13-01");
+  EXPECT_EQ(run.exit_code, 2) << run.output;
+  EXPECT_NE(run.output.find("not an ISO date"), std::string::npos) << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
 }
 
 TEST_F(ReportCommand, UnknownLearnerOrSessionIsOneLineAndExitCode2) {

@@ -33,6 +33,11 @@ void ReviewModel::reload() {
   }
 }
 
+review::SessionFilter ReviewModel::filter() const {
+  static constexpr const char* kTasks[] = {"", "parking", "writing"};
+  return {filter_fields.learner.data(), kTasks[filter_fields.task], filter_fields.from.data(), filter_fields.to.data()};
+}
+
 void ReviewModel::sort(review::SessionColumn column, bool ascending) {
   review::sort_session_rows(rows_, column, ascending);
 }

@@ -3,6 +3,7 @@
 // review can run while the trainer writes): the session rows and their sort, the selected session's review
 // (SessionReview with its task kit), the selected trial with its picture and playback, the before/after
 // groups and the expertise/diagnosis of the session. Errors become a one-line message to show.
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "app/gui/app_services.hpp"
 #include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/review_playback.hpp"
+#include "teaching/review/session_filter.hpp"
 #include "teaching/review/session_rows.hpp"
 #include "teaching/tasks/task_kit_cache.hpp"
 
@@ -24,6 +26,14 @@ class ReviewModel {
   explicit ReviewModel(AppServices& services);
 
   std::string message;  // last problem, one line; empty if none
+
+  // The session list's filter as typed (ImGui text buffers); filter() reads it as a review::SessionFilter.
+  struct FilterFields {
+    std::array<char, 64> learner{}, from{}, to{};
+    int task = 0;  // 0 every task, 1 parking, 2 writing
+  };
+  FilterFields filter_fields;
+  review::SessionFilter filter() const;
 
   const std::vector<review::SessionListRow>& rows() const { return rows_; }
   void sort(review::SessionColumn column, bool ascending);

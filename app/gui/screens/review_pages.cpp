@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "app/gui/navigator.hpp"
 #include "engine/review_view/review_palette.hpp"
@@ -84,12 +85,52 @@ void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
   }
 }
 
+// Learner, task and date fields above the session list; a date that is not one is named, not applied.
+void draw_session_filter(UiContext& ui, ReviewModel& model) {
+  const float s = ui.ui_scale;
+  ReviewModel::FilterFields& f = model.filter_fields;
+  auto label = [&](const char* text) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted(text);
+    ImGui::SameLine();
+  };
+  label("Learner");
+  ImGui::SetNextItemWidth(220 * s);
+  ImGui::InputTextWithHint("##learner", "name or part of it", f.learner.data(), f.learner.size());
+  ImGui::SameLine(0, 24 * s);
+  label("Task");
+  ImGui::SetNextItemWidth(150 * s);
+  ImGui::Combo("##task", &f.task, "every task\0parking\0writing\0");
+  ImGui::SameLine(0, 24 * s);
+  label("From");
+  ImGui::SetNextItemWidth(140 * s);
+  ImGui::InputTextWithHint("##from", "YYYY-MM-DD", f.from.data(), f.from.size());
+  ImGui::SameLine();
+  label("to");
+  ImGui::SetNextItemWidth(140 * s);
+  ImGui::InputTextWithHint("##to", "YYYY-MM-DD", f.to.data(), f.to.size());
+  ImGui::SameLine(0, 24 * s);
+  if (ImGui::Button("Reload")) model.reload();
+}
+
 void draw_review_sessions(UiContext& ui, ReviewModel& model, ReviewPage& page) {
   const float s = ui.ui_scale;
   begin_review_panel("review_sessions", 0, kReviewTopBar * s, static_cast<float>(ui.width),
                      static_cast<float>(ui.height) - kReviewTopBar * s);
-  ImGui::TextDisabled("Every session in the learner database. Click a column to sort; pick a session to review it.");
-  if (ImGui::Button("Reload")) model.reload();
+  ImGui::TextDisabled(
+      "Every session in the learner database (a class's, on a shared store). Click a column to sort; pick a session "
+      "to review it.");
+  draw_session_filter(ui, model);
+  const review::SessionFilter filter = model.filter();
+  int shown = 0;
+  for (const review::SessionListRow& row : model.rows()) shown += review::matches(row, filter);
+  ImGui::TextDisabled("Showing %d of %zu sessions%s", shown, model.rows().size(),
+                      shown == 0 && !model.rows().empty() ? ": none matches the filter." : ".");
+  for (const auto& [name, bound] : {std::pair{"From", filter.from}, std::pair{"To", filter.to}})
+    if (!review::valid_date_bound(bound)) {
+      ImGui::SameLine(0, 16 * s);
+      ImGui::TextColored({1.0f, 0.65f, 0.5f, 1.0f}, "%s is not a date (YYYY-MM-DD): ignored.", name);
+    }
   const ImGuiTableFlags flags = ImGuiTableFlags_Sortable | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH |
                                 ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp;
   if (ImGui::BeginTable("sessions", 9, flags)) {
@@ -107,6 +148,7 @@ void draw_review_sessions(UiContext& ui, ReviewModel& model, ReviewPage& page) {
       specs->SpecsDirty = false;
     }
     for (const review::SessionListRow& row : model.rows()) {
+      if (!review::matches(row, filter)) continue;
       ImGui::TableNextRow();
       ImGui::PushID(static_cast<int>(row.session_id));
       for (review::SessionColumn c : review::kSessionColumns) {
@@ -200,9 +242,12 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
     ImGui::TextDisabled("%s", model.diagnosis_problem.c_str());
   } else {
     ImGui::TextDisabled(
-        "Alg. 2 recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
-        "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward).",
-        d->pretest_trials, d->extractor.c_str());
+        "%s recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
+        "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward)%s.",
+        d->mode == ExpertiseMode::Alg2 ? "Alg. 2" : "Quality-aware expertise", d->pretest_trials, d->extractor.c_str(),
+        d->mode == ExpertiseMode::Alg2 ? ""
+                                       : "; one shown but done worse than the learner's other skills costs "
+                                         "Delta = -q / j (q: that part's execution score below the learner's median)");
     ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
                        d->matches_stored ? "Matches the stored diagnosis."
                                          : "Differs from the stored diagnosis (model or data changed since).");
@@ -219,9 +264,12 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       ImGui::PopFont();
       ImGui::Text("E = %.3f, used %d times by the expert", skill.expertise, skill.occurrences);
       if (skill.missed.empty()) ImGui::TextDisabled("Never missed (a target by rank among equals).");
-      for (const auto& m : skill.missed)
-        ImGui::BulletText("missed in pre-test trial %d: position j = %d, reward r = %.3f, Delta = %.3f", m.seq,
-                          m.position, m.reward, m.delta);
+      for (const auto& m : skill.missed) {
+        ImGui::Bullet();
+        ImGui::TextWrapped("%s in pre-test trial %d: j = %d, %s = %.3f, Delta = %.3f",
+                           m.execution ? "done badly" : "missed", m.seq, m.position, m.execution ? "q" : "r", m.reward,
+                           m.delta);
+      }
     }
   }
   ImGui::PopTextWrapPos();

@@ -11,6 +11,7 @@
 #include "engine/render/gl_context.hpp"
 #include "teaching/records/open_record_store.hpp"
 #include "teaching/review/review_report.hpp"
+#include "teaching/review/session_filter.hpp"
 #include "teaching/tasks/task_kit_cache.hpp"
 
 namespace sc {
@@ -115,8 +116,7 @@ class ReportWriter {
 namespace {
 
 bool started_within(const review::SessionListRow& row, const ReportRequest& request) {
-  return (request.from.empty() || row.date >= request.from) &&
-         (request.to.empty() || row.date.compare(0, request.to.size(), request.to) <= 0);
+  return review::matches(row, {"", "", request.from, request.to});
 }
 
 std::unique_ptr<records::RecordStore> open_for_report(const ReportRequest& request) {
