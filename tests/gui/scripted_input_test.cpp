@@ -202,6 +202,27 @@ TEST(ScriptedGui, EscPausesAWritingTrialWithoutTimingThePause) {
   EXPECT_EQ(far_right, trial.points.end()) << "the mouse moved to the right while paused: no ink there";
 }
 
+// A class server that does not answer (a socket directory that does not exist): the welcome page says so
+// and offers this computer's store; the learner's session then starts there, nothing is sent anywhere.
+TEST(ScriptedGui, AnUnreachableClassServerOffersTrainingOnThisComputer) {
+  const fs::path dir = fresh_dir("offline_start");
+  const std::string store = "postgresql:///skillcoach?host=" + (dir / "no_server").string();
+  const test::CommandResult run =
+      test::run_skillcoach("--data-dir '" + dir.string() + "' --store '" + store + "' --script '" +
+                               script_file("offline_start.json").string() + "'",
+                           "cd '" + dir.string() + "' && SDL_VIDEODRIVER=offscreen");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::vector<std::string> expected{"start", "learn_welcome", "learn_instructions"};
+  EXPECT_EQ(screens_shown(run.output), expected) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "offline_choice.png"));
+  records::LearnerStore local(dir);
+  const auto learners = local.list_learners();
+  ASSERT_EQ(learners.size(), 1u);
+  EXPECT_EQ(learners[0].name, "Ada");
+  ASSERT_EQ(learners[0].sessions.size(), 1u);
+  EXPECT_EQ(learners[0].sessions[0].session.task, "writing");
+}
+
 TEST(ScriptedGui, BadScriptIsOneErrorLineNamingTheFileAndExit2) {
   const fs::path dir = fresh_dir("bad");
   for (const char* name : {"bad_unknown_action.json", "bad_key_name.json", "bad_not_json.json"}) {

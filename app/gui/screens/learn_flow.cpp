@@ -21,11 +21,17 @@ TimestampSource clock_of(const LearnFlow& flow) {
 
 records::RecordStore& LearnFlow::store(const AppServices& services) {
   if (!store_) {
+    if (store_failure_) std::rethrow_exception(store_failure_);
     const std::filesystem::path dir = services.options.data_dir.empty()
                                           ? records::default_data_dir()
                                           : std::filesystem::path(services.options.data_dir);
-    store_ = services.options.store.empty() ? std::make_unique<records::LearnerStore>(dir)
-                                            : records::open_record_store(services.options.store, {}, dir);
+    try {
+      store_ = services.options.store.empty() ? std::make_unique<records::LearnerStore>(dir)
+                                              : records::open_record_store(services.options.store, {}, dir);
+    } catch (const InputError&) {
+      store_failure_ = std::current_exception();
+      throw;
+    }
   }
   return *store_;
 }

@@ -7,6 +7,7 @@
 // Headless screenshots have no learner: learn_flow_for_screenshot() builds a deterministic session (fixed
 // seed, fixed timestamps, scripted learner, a fresh database in a temporary directory) and plays it up to
 // the phase the screen shows, so every screen of the flow has a golden with real data.
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -33,7 +34,12 @@ class LearnFlow {
   int drills_per_weak_skill = SessionSettings{}.drills_per_weak_skill;  // ... this many unique drills each
   std::string message;  // last problem to show (one line), empty if none
 
+  // The learner store, opened on first use. A store that could not be opened is not opened again by every
+  // frame's query (a class server that does not answer costs its connect timeout each time): store()
+  // rethrows that failure until retry_store(), which the learner's Continue calls.
   records::RecordStore& store(const AppServices& services);
+  void retry_store() { store_failure_ = nullptr; }
+  bool store_failed() const { return store_failure_ != nullptr; }
   TrainingSession* session() { return session_.get(); }
 
   // Starts a new session, or resumes the learner's unfinished one of this task when `resume` is set.
@@ -54,6 +60,7 @@ class LearnFlow {
 
   TaskKitCache kits_;  // built on first use (parking segments its pool once per lot)
   std::unique_ptr<records::RecordStore> store_;
+  std::exception_ptr store_failure_;
   std::unique_ptr<TrainingSession> session_;
 };
 

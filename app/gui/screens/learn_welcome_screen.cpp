@@ -13,6 +13,7 @@
 #include "app/gui/screens/learn_flow.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
+#include "teaching/records/data_dir.hpp"
 
 namespace sc {
 namespace {
@@ -51,11 +52,15 @@ class LearnWelcomeScreen final : public Screen {
     if (flow_.research) draw_research(ui);
     ImGui::Dummy(ImVec2(0, 8 * ui.ui_scale));
     draw_start(ui);
-    if (!flow_.message.empty()) {
+    if (server_unreachable()) {
+      draw_offline_choice();
+    } else if (!flow_.message.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.5f, 1.0f));
       ImGui::TextWrapped("%s", flow_.message.c_str());
       ImGui::PopStyleColor();
     }
+    if (offline_)
+      learn_ui::muted_wrapped(("Training on this computer: your records are kept in " + data_dir() + ".").c_str());
     ImGui::Dummy(ImVec2(0, 4 * ui.ui_scale));
     ImGui::TextDisabled("Device: %s", describe(services_.device).c_str());
     ImGui::SameLine();
@@ -190,8 +195,35 @@ class LearnWelcomeScreen final : public Screen {
     confirm_ = false;
   }
 
+  std::string data_dir() const {
+    return services_.options.data_dir.empty() ? records::default_data_dir().string() : services_.options.data_dir;
+  }
+  bool server_unreachable() const { return !services_.options.store.empty() && flow_.store_failed(); }
+
+  // A class server that cannot be reached: say what it means and offer this computer's own store (the
+  // technical reason on hover, so the page keeps its layout whatever the error says). The server is what keeps a
+  // learner on one desktop at a time, so a session cannot start on it offline; records kept here move to the class
+  // store later (export, import) as sessions of their own.
+  void draw_offline_choice() {
+    ImGui::TextColored(ImVec4(1.0f, 0.55f, 0.5f, 1.0f), "The class server cannot be reached.");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(details)");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", flow_.message.c_str());
+    if (ImGui::Button("Train on this computer", ImVec2(-1, 0))) {
+      services_.options.store.clear();
+      flow_.retry_store();
+      flow_.message.clear();
+      offline_ = true;
+      return;
+    }
+    learn_ui::muted_wrapped(
+        "Press Continue to try again, or train on this computer: your records stay in its data directory until "
+        "your instructor moves them to the class store (skillcoach export, then import).");
+  }
+
   void begin(UiContext& ui, bool resume) {
     try {
+      flow_.retry_store();
       flow_.message.clear();
       flow_.start(services_, resume);
       TrainingSession& s = *flow_.session();
@@ -207,6 +239,7 @@ class LearnWelcomeScreen final : public Screen {
   std::array<char, 64> name_{};
   bool confirm_ = false;
   bool name_focused_ = false;
+  bool offline_ = false;  // the learner chose this computer's store over an unreachable class server
 };
 
 const ScreenRegistration kLearnWelcomeScreenRegistration{
