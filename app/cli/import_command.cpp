@@ -29,9 +29,12 @@ CommandRunner setup_import(CLI::App& sub) {
     const Json doc = read_json_file(options->in);
     const auto store = records::open_record_store(options->store);
     const auto result = records::import_records(doc, options->in, *store);
-    std::printf("imported %zu learners, %zu studies, %zu sessions and %zu trials from %s into %s\n", result.learners,
+    std::printf("imported %zu learners, %zu studies, %zu sessions and %zu trials from %s into %s", result.learners,
                 result.studies, result.sessions, result.trials, options->in.c_str(),
                 store->database_path().string().c_str());
+    if (result.sessions_already_there > 0)
+      std::printf(" (%zu sessions were there already: skipped)", result.sessions_already_there);
+    std::printf("\n");
     return 0;
   };
 }

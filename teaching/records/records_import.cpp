@@ -1,6 +1,7 @@
 #include "teaching/records/records_import.hpp"
 
 #include <set>
+#include <tuple>
 
 #include "engine/core/error.hpp"
 #include "teaching/records/record_json.hpp"
@@ -11,22 +12,23 @@ namespace {
 
 class Importer {
  public:
-  explicit Importer(RecordStore& store) : store_(store) {}
+  explicit Importer(RecordStore& store) : store_(store) {
+    for (const auto& l : store_.list_learners()) {
+      learners_.insert(l.name);
+      for (const auto& s : l.sessions) sessions_.insert({l.name, s.session.task, s.session.started});
+    }
+  }
 
-  void refuse_overlap(const JsonView& doc) const {
-    std::set<std::string, std::less<>> learners, studies;
-    for (const auto& l : store_.list_learners()) learners.insert(l.name);
+  // A study is created whole, with every participant's place, so one the store holds is refused.
+  void refuse_study_overlap(const JsonView& doc) const {
+    std::set<std::string, std::less<>> studies;
     for (const auto& s : store_.list_studies()) studies.insert(s.name);
-    const auto in = [&](const JsonView& list, const std::set<std::string, std::less<>>& names, const char* what) {
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        const auto name = list.at(i).at("name").string();
-        if (names.count(name) != 0)
-          throw InputError(where(), std::string("already holds the ") + what + " \"" + name +
-                                        "\"; import into a store without the document's learners and studies");
-      }
-    };
-    in(doc.at("learners"), learners, "learner");
-    in(doc.at("studies"), studies, "study");
+    const auto list = doc.at("studies");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const auto name = list.at(i).at("name").string();
+      if (studies.count(name) != 0)
+        throw InputError(where(), "already holds the study \"" + name + "\"; import into a store without it");
+    }
   }
 
   void study(const JsonView& node) {
@@ -50,6 +52,12 @@ class Importer {
   }
 
   void session(const JsonView& node) {
+    // Already here (an earlier import of the same records): the learner, task and start time name a session.
+    if (!sessions_.insert({node.at("learner").string(), node.at("task").string(), node.at("started").string()})
+             .second) {
+      ++result_.sessions_already_there;
+      return;
+    }
     NewSession s{node.at("learner").string(),
                  node.at("task").string(),
                  node.at("condition").string(),
@@ -85,7 +93,9 @@ class Importer {
   }
 
   void learner(const JsonView& node) {
-    store_.ensure_learner(node.at("name").string(), node.at("created").string());
+    const std::string name = node.at("name").string();
+    if (!learners_.insert(name).second) return;  // their sessions are added to theirs
+    store_.ensure_learner(name, node.at("created").string());
     ++result_.learners;
   }
 
@@ -104,6 +114,8 @@ class Importer {
 
   RecordStore& store_;
   RecordsImport result_;
+  std::set<std::string, std::less<>> learners_;
+  std::set<std::tuple<std::string, std::string, std::string>> sessions_;  // learner, task, started
 };
 
 }  // namespace
@@ -113,7 +125,7 @@ RecordsImport import_records(const Json& doc, const std::string& source, RecordS
   if (root.at("format").string() != kExportFormat || root.at("version").integer() != kExportVersion)
     throw InputError(source, "is not a skillcoach-records export of version " + std::to_string(kExportVersion));
   Importer importer(store);
-  importer.refuse_overlap(root);
+  importer.refuse_study_overlap(root);
   const auto learners = root.at("learners");
   for (std::size_t i = 0; i < learners.size(); ++i) importer.learner(learners.at(i));
   const auto studies = root.at("studies");

@@ -4,6 +4,9 @@
 // learners, studies with every participant's place and condition, sessions with their settings, resume
 // point and end, every trial in order, diagnoses and curricula. Stored ids are the destination's own (the
 // export of the destination equals the source's but for "id" and "session_id").
+// A learner the store already holds keeps their sessions and gains the document's other ones: a desktop that
+// trained offline brings its sessions to the class store, each a session of its own. A session the store
+// already has (same learner, task and start time) is skipped, so importing the same document twice adds nothing.
 #include <cstddef>
 #include <string>
 
@@ -14,15 +17,16 @@ namespace sc::records {
 
 struct RecordsImport {
   std::size_t learners = 0;
-  std::size_t sessions = 0;
+  std::size_t sessions = 0;                // added
+  std::size_t sessions_already_there = 0;  // skipped: the store had them
   std::size_t trials = 0;
   std::size_t studies = 0;
 };
 
 // Throws sc::InputError naming `source` for a document of another format or version, or naming the store
-// when it already holds one of the document's learners or studies (a second import would duplicate their
-// sessions), when a record is refused or cannot be stored now, or when the store would give a participant
-// another condition than the export records (the study's seed and order decide it).
+// when it already holds one of the document's studies (a study is created whole), when a record is refused
+// or cannot be stored now, or when the store would give a participant another condition than the export
+// records (the study's seed and order decide it).
 RecordsImport import_records(const Json& doc, const std::string& source, RecordStore& store);
 
 }  // namespace sc::records

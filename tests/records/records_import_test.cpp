@@ -73,13 +73,47 @@ TEST(RecordsImport, MovesEveryRecordFromSqliteToPostgresAndBackWithoutLoss) {
   EXPECT_EQ(without_ids(exported(back)), without_ids(source));
 }
 
-TEST(RecordsImport, RefusesAStoreThatAlreadyHoldsTheLearnersAndAnotherFormat) {
+// A learner who trained on a desktop while the class server was away: the desktop's session joins the ones the
+// class store holds for them, and importing the same file again adds nothing.
+TEST(RecordsImport, AKnownLearnersOtherSessionsAreAddedAndASecondImportAddsNothing) {
+  const auto server = test::fresh_store(test::Backend::Sqlite, "import_class");
+  {
+    const auto store = server.open();
+    const auto s = store->begin_session(sample_session("Ada"));
+    store->record_trial(sample_trial(s, 0));
+  }
+  const auto desktop = test::fresh_store(test::Backend::Sqlite, "import_desktop");
+  {
+    const auto store = desktop.open();
+    auto offline = sample_session("Ada", "writing");
+    offline.started = "2024-05-02T09:00:00.000Z";
+    const auto s = store->begin_session(offline);
+    store->record_trial(sample_trial(s, 0));
+    store->record_trial(sample_trial(s, 1));
+  }
+  const Json offline = exported(desktop);
+  auto counts = import_records(offline, "desktop.json", *server.open());
+  EXPECT_EQ(counts.learners, 0u);  // Ada was there
+  EXPECT_EQ(counts.sessions, 1u);
+  EXPECT_EQ(counts.trials, 2u);
+  EXPECT_EQ(counts.sessions_already_there, 0u);
+  counts = import_records(offline, "desktop.json", *server.open());
+  EXPECT_EQ(counts.sessions, 0u);
+  EXPECT_EQ(counts.sessions_already_there, 1u);
+  const auto learners = server.open(StoreOptions{.read_only = true})->list_learners();
+  ASSERT_EQ(learners.size(), 1u);
+  ASSERT_EQ(learners[0].sessions.size(), 2u);
+  EXPECT_EQ(learners[0].sessions[1].session.task, "writing");
+  EXPECT_EQ(learners[0].sessions[1].trial_count, 2);
+}
+
+TEST(RecordsImport, RefusesAStoreThatAlreadyHoldsTheStudyAndAnotherFormat) {
   const auto sqlite = test::fresh_store(test::Backend::Sqlite, "import_twice");
   fill(*sqlite.open());
   const Json source = exported(sqlite);
   const auto store = sqlite.open();
   EXPECT_NE(
-      test::error_of([&] { import_records(source, "records.json", *store); }).find("already holds the learner \"Ada\""),
+      test::error_of([&] { import_records(source, "records.json", *store); }).find("already holds the study \"pilot\""),
       std::string::npos);
   EXPECT_EQ(test::error_of([&] {
               import_records(Json{{"format", "other"}, {"version", 1}}, "x.json", *store);
