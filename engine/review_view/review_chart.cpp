@@ -57,7 +57,7 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   dl.AddRect({x, y + fs * 0.15f}, {x + fs * 0.9f, y + fs * 0.95f}, IM_COL32(255, 255, 255, 255), 2.0f, 0, 2.0f * scale);
   dl.AddText({x + fs * 1.2f, y}, kMuted, "drilled in that round");
   y += fs * 1.3f;
-  dl.AddText({left, y}, kMuted, "longer bar = more missed (E = -sum of the deltas)");
+  dl.AddText({left, y}, kMuted, "longer bar = weaker (E = -sum of the deltas)");
   y += fs * 1.6f;
   const double full = chart.lowest < 0.0 ? -chart.lowest : 1.0;
   for (const ChartSkill& s : chart.skills) {

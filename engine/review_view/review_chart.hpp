@@ -1,6 +1,6 @@
 #pragma once
 // The review's charts, drawn into an ImGui draw list (so the app's screens and the offscreen report images
-// draw exactly the same): per-skill expertise across rounds as horizontal bars (longer = more missed, the
+// draw exactly the same): per-skill expertise across rounds as horizontal bars (longer = weaker, the
 // trainer's diagnosis convention), and a trial's reward over time with an optional playhead.
 // Call between ImGui NewFrame and Render (the fonts and the font size come from the current frame).
 #include <imgui.h>
