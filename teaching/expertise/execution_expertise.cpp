@@ -55,18 +55,27 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
   return best;
 }
 
-// Each segment's reward relative to the learner's median segment: what stands out from how this learner
-// does everything else.
-std::vector<ExecutionTrial> relative_to_median(std::vector<ExecutionTrial> trials) {
+double median_of(std::vector<double> values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+// Each segment's reward relative to the learner's usual spread: only the part below the outlier cut
+// (median - kOutlierCut robust standard deviations) counts, so what stands out from how this learner does
+// everything else is charged, and the ordinary scatter of a hand or a device is not.
+std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials) {
   std::vector<double> rewards;
   for (const ExecutionTrial& t : trials)
     for (const SegmentExecution& s : t.segments) rewards.push_back(s.reward);
   if (rewards.empty()) return trials;
-  const auto middle = rewards.begin() + static_cast<std::ptrdiff_t>(rewards.size() / 2);
-  std::nth_element(rewards.begin(), middle, rewards.end());
-  const double median = *middle;
+  const double median = median_of(rewards);
+  std::vector<double> deviations;
+  for (double r : rewards) deviations.push_back(std::abs(r - median));
+  const double spread = kMadToStandardDeviation * median_of(deviations);
+  const double cut = median - kOutlierCut * spread;
   for (ExecutionTrial& t : trials)
-    for (SegmentExecution& s : t.segments) s.reward = std::min(0.0, s.reward - median);
+    for (SegmentExecution& s : t.segments) s.reward = std::min(0.0, s.reward - cut);
   return trials;
 }
 
@@ -98,12 +107,10 @@ const char* target_reason_words(TargetReason reason) {
 
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given, int num_skills,
                                                 int num_targets, ExpertiseMode mode) {
+  for (std::size_t t = 0; t < given.size(); ++t) check(given[t], t);
+  const std::vector<ExecutionTrial> trials = relative_to_learner(given);
   std::vector<ExpertiseTrial> plain;
-  for (std::size_t t = 0; t < given.size(); ++t) {
-    check(given[t], t);
-    plain.push_back(given[t].trial);
-  }
-  const std::vector<ExecutionTrial> trials = relative_to_median(given);
+  for (const ExecutionTrial& t : given) plain.push_back(t.trial);
   ExecutionExpertise out;
   out.estimate = estimate_expertise(plain, num_skills, num_targets);
   if (mode == ExpertiseMode::QualityAware) {

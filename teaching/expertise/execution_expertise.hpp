@@ -3,16 +3,17 @@
 // segmentation, so a skill done recognisably but badly is never diagnosed, and a skill the segmentation
 // happens to miss is charged the whole trial's reward. This adds a per-skill execution term:
 //
-//   E^q_m = E_m (Alg. 2, unchanged)  +  w · Σ_ξ Σ_{j : m^e_j = m} min(0, q_{ξ,j} - q̃) / j
+//   E^q_m = E_m (Alg. 2, unchanged)  +  w · Σ_ξ Σ_{j : m^e_j = m} min(0, q_{ξ,j} - (q̃ - c·s)) / j
 //
 // where q_{ξ,j} <= 0 is the task's own reward of the learner's part aligned (dynamic time warping,
-// trace_alignment.hpp) with the expert's j-th segment of trial ξ, relative to a perfect copy (0), and q̃
-// the median of the learner's q over all the trials' segments. The 1/j weight is Alg. 2's: early skills
-// weigh more. w = kExecutionWeight.
-// Why the median: a learner's input device and hand spoil every segment a little (a mouse's corners, a
-// wobble wider than the writing score's 3 px tolerance); a skill is done badly when it is done worse than
-// the learner does the rest. Measured on writing's planted learners it finds more planted letters and
-// leaves parking's tables as they were (docs/skills.md, "Quality-aware expertise on the writing table").
+// trace_alignment.hpp) with the expert's j-th segment of trial ξ, relative to a perfect copy (0), q̃ the
+// median of the learner's q over all the trials' segments, s their robust standard deviation (scaled
+// median absolute deviation) and c = kOutlierCut. The 1/j weight is Alg. 2's: early skills weigh more.
+// w = kExecutionWeight.
+// Why relative to the learner: a learner's input device and hand spoil every segment a little (a mouse's
+// corners, a wobble wider than the writing score's 3 px tolerance); a skill is done badly when it is done
+// clearly worse than the learner does the rest - an outlier among their own segments, not merely below
+// their median (docs/skills.md, "Quality-aware expertise on the writing table").
 //
 // Why each target was chosen is its largest penalty: "missing" (Alg. 2's) or "done with a large error"
 // (the execution term), with the trial, the expert's steps and the learner's aligned steps.
@@ -25,6 +26,11 @@
 namespace sc {
 
 inline constexpr double kExecutionWeight = 1.0;
+// The outlier cut: Iglewicz and Hoaglin's modified z-score of 3.5, the usual robust test for "stands out",
+// with the median absolute deviation scaled to a normal standard deviation (1.4826). Taken from the
+// literature, not fitted to the planted-learner tables.
+inline constexpr double kOutlierCut = 3.5;
+inline constexpr double kMadToStandardDeviation = 1.4826;
 
 enum class ExpertiseMode {
   Alg2,          // the paper's Alg. 2 exactly (research mode)

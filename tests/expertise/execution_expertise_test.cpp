@@ -31,20 +31,44 @@ TEST(ExecutionExpertise, Alg2ModeIsAlg2Exactly) {
   EXPECT_EQ(e.why[1].delta, 0.0);
 }
 
-TEST(ExecutionExpertise, QualityAwareAddsEachSegmentsErrorBeyondTheLearnersMedianOverItsPosition) {
-  const ExecutionExpertise e = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware);
-  // The learner's median segment reward is -0.2: only what is worse than that counts.
+// The same learner doing two more trials with nothing missing and an ordinary hand's scatter.
+std::vector<ExecutionTrial> three_trials() {
+  ExecutionTrial shown = trial();
+  shown.trial.student = shown.trial.expert;
+  shown.trial.student_reward = -0.2;
+  ExecutionTrial b = shown, c = shown;
+  b.segments = {{-0.15, 0, 10}, {-0.20, 10, 20}, {-0.25, 20, 30}};
+  c.segments = {{-0.20, 0, 10}, {-0.10, 10, 20}, {-0.15, 20, 30}};
+  ExecutionTrial a = trial();
+  a.segments = {{-0.10, 0, 12}, {-0.90, 12, 25}, {-0.20, 25, 30}};
+  return {a, b, c};
+}
+
+TEST(ExecutionExpertise, QualityAwareChargesASegmentByHowFarItFallsBeyondTheLearnersOutlierCut) {
+  const ExecutionExpertise e = estimate_execution_expertise(three_trials(), 3, 2, ExpertiseMode::QualityAware);
+  // The nine segment rewards have median -0.2 and median absolute deviation 0.05.
+  const double cut = -0.2 - kOutlierCut * kMadToStandardDeviation * 0.05;
   EXPECT_DOUBLE_EQ(e.estimate.expertise[0], 0.0);
-  EXPECT_DOUBLE_EQ(e.estimate.expertise[1], -0.7 / 2);
-  EXPECT_DOUBLE_EQ(e.estimate.expertise[2], -0.3 / 3);
+  EXPECT_NEAR(e.estimate.expertise[1], (-0.9 - cut) / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[2], -0.3 / 3);  // Alg. 2's: missing in the first trial
   // Skill 1 was shown (Alg. 2 never sees it) but done with a large error: now the first target.
   ASSERT_EQ(e.estimate.targets, (std::vector<int>{1, 2}));
   EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
+  EXPECT_EQ(e.why[0].trial, 0);
   EXPECT_EQ(e.why[0].expert_begin, 10);
   EXPECT_EQ(e.why[0].learner_begin, 12);
   EXPECT_EQ(e.why[0].learner_end, 25);
   EXPECT_EQ(e.why[1].reason, TargetReason::Missing);
   EXPECT_STREQ(target_reason_words(e.why[0].reason), "done with a large error here");
+}
+
+TEST(ExecutionExpertise, AHandsOrdinaryScatterIsChargedNothing) {
+  std::vector<ExecutionTrial> trials = three_trials();
+  trials[0].segments[1].reward = -0.4;  // worse than the median, not an outlier
+  const ExecutionExpertise e = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware);
+  std::vector<ExpertiseTrial> plain;
+  for (const ExecutionTrial& t : trials) plain.push_back(t.trial);
+  EXPECT_EQ(e.estimate.expertise, estimate_expertise(plain, 3, 2).expertise);
 }
 
 TEST(ExecutionExpertise, AHandThatDoesEverySkillEquallyBadlyIsChargedNoExecutionPenalty) {
