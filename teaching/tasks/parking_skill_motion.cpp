@@ -14,6 +14,9 @@ constexpr double kMovingSpeed = 0.5;    // m/s: slower counts as "nearly stopped
 constexpr double kTurningSteer = 0.15;  // |mean u1| below this is "straight"
 constexpr double kBraking = 0.15;       // |mean u0| against the motion above this is "braking"
 constexpr double kSharpSteer = 0.5;     // |u1| above this is more than half lock
+// A skill whose mean steering is near zero but which steers beyond half lock on most of its steps turns
+// hard both ways (e.g. a reversing correction), so "straight" would tell the learner the opposite.
+constexpr double kMostSteps = 0.5;
 }  // namespace
 
 std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequence>& experts,
@@ -81,6 +84,8 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
     words += " while steering right";
   else if (m.mean_steering <= -kTurningSteer)
     words += " while steering left";
+  else if (m.sharp_fraction > kMostSteps)
+    words += " while steering hard left and right";
   else
     words += " straight";
   // Acceleration against the direction of motion slows the car down.

@@ -31,7 +31,8 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
 bool motion_reverses(const ParkingSkillMotion& motion);
 bool motion_brakes(const ParkingSkillMotion& motion);
 
-// "reversing while steering left, braking", "driving forward straight", "unused skill" ...
+// "reversing while steering left, braking", "driving forward straight", "reversing while steering hard left and
+// right" (near-zero mean steering, beyond half lock on most steps), "unused skill" ...
 std::string describe_parking_motion(const ParkingSkillMotion& motion);
 // The words of every skill, distinct among used skills, so a learner never sees two different skills under
 // one name. Skills that share words get what sets them apart, in words a learner can act on: their speed

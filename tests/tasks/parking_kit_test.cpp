@@ -191,6 +191,12 @@ TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {
   EXPECT_EQ(describe_parking_motion(reverse), "reversing while steering left");
   ParkingSkillMotion forward{10, 4.0, -0.5, 0.05, 0.0};
   EXPECT_EQ(describe_parking_motion(forward), "driving forward straight, braking");
+  // Near-zero mean steering from full lock one way and then the other is not "straight".
+  ParkingSkillMotion both_ways{10, -3.0, -0.3, 0.02, 1.0};
+  both_ways.sharp_fraction = 0.69;
+  EXPECT_EQ(describe_parking_motion(both_ways), "reversing while steering hard left and right");
+  both_ways.sharp_fraction = 0.2;
+  EXPECT_EQ(describe_parking_motion(both_ways), "reversing straight");
   EXPECT_EQ(describe_parking_motion(ParkingSkillMotion{}), "unused skill");
   for (int m = 0; m < 3; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
   EXPECT_EQ(kit().describe_skill(7), "unknown skill");
