@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screen.hpp"
@@ -14,13 +15,14 @@
 #include "app/gui/screens/learn_skill_picture.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
+#include "teaching/curricula/teachable_skills.hpp"
 
 namespace sc {
 namespace {
 
 // Why a skill lost expertise and where: its largest penalty, e.g. "missing in trial 2" (Alg. 2 charges a
 // skill the expert used in a trial that the learner's trial does not show) or "done with a large error in
-// trial 2" (quality-aware expertise: shown, but done worse than the learner's other skills).
+// trial 2" (quality-aware expertise: shown, but done clearly worse than the learner's other skills).
 std::string why_words(const ExpertiseEstimate& e, int skill) {
   const auto& list = e.contributions[static_cast<std::size_t>(skill)];
   const ExpertiseContribution* worst = nullptr;
@@ -89,6 +91,11 @@ class LearnDiagnosisScreen final : public Screen {
     if (worst <= 1e-9)
       learn_ui::muted_wrapped("No skill stood out as missing: the drills cover the skills the expert relies on most.");
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
+    // A weak skill too brief to practise on its own (teachable_skills.hpp) says so: otherwise a learner
+    // wonders why a long bar gets no drill.
+    std::vector<Segmentation> pool;
+    for (const ExpertDemo& demo : kit.expert_pool()) pool.push_back(demo.skills);
+    const int min_steps = s.curriculum_config().min_skill_steps;
     const ImVec2 pic(110 * sc, 56 * sc);
     // The list scrolls when the window is too short for every row, so the button below always shows.
     const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
@@ -110,7 +117,8 @@ class LearnDiagnosisScreen final : public Screen {
       ImGui::BeginGroup();
       const std::string words = kit.describe_skill(m);
       if (drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
-      ImGui::Text("%s%s", words.c_str(), drilled ? "   - drills now" : "");
+      const bool brief = !drilled && !is_teachable(m, pool, min_steps);
+      ImGui::Text("%s%s", words.c_str(), drilled ? "   - drills now" : brief ? "   - too brief to drill alone" : "");
       const std::string why = why_words(e, m);
       if (!why.empty()) {
         ImGui::SameLine(0, 10 * sc);
