@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "teaching/curricula/teachable_skills.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
 #include "teaching/sessions/session_settings.hpp"
 #include "teaching/tasks/diagnosis.hpp"
@@ -140,13 +141,19 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
     }
     report.letters.push_back(row);
   }
+  const std::vector<Segmentation> pool = demo_skills(kit.expert_pool());
+  const int min_steps = kit.curriculum_config().min_skill_steps;
   for (int i = 0; i < learners_per_letter; ++i) {
     const ExpertiseEstimate e =
         diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()}, mode);
-    double lowest = 0.0;
+    double lowest = 0.0, lowest_drilled = 0.0;
     for (int m : e.targets) lowest = std::min(lowest, e.expertise[static_cast<std::size_t>(m)]);
+    std::vector<int> drilled = teachable_ranking(e, pool, min_steps);
+    drilled.resize(std::min(drilled.size(), e.targets.size()));
+    for (int m : drilled) lowest_drilled = std::min(lowest_drilled, e.expertise[static_cast<std::size_t>(m)]);
     ++report.noise_learners;
     report.noise_without_confident_target += lowest >= kConfidentTargetExpertise;
+    report.noise_without_confident_drill_target += lowest_drilled >= kConfidentTargetExpertise;
     report.noise_lowest_expertise.push_back(lowest);
     if (!e.targets.empty()) ++report.noise_top_targets[e.targets.front()];
   }
@@ -175,6 +182,11 @@ std::string planted_weakness_table(const PlantedWeaknessReport& report) {
                 kConfidentTargetExpertise, report.noise_without_confident_target, report.noise_learners,
                 report.noise_learners ? 100.0 * report.noise_without_confident_target / report.noise_learners : 0.0,
                 lowest.empty() ? 0.0 : lowest.front(), lowest.empty() ? 0.0 : lowest[lowest.size() / 2]);
+  out += line;
+  std::snprintf(line, sizeof line,
+                "noise-only learners without a drill target below E = %.2f (only skills long enough to drill "
+                "alone, as the trainer drills): %d of %d\n",
+                kConfidentTargetExpertise, report.noise_without_confident_drill_target, report.noise_learners);
   out += line;
   out += "noise-only learners' first target (skill: learners):";
   for (const auto& [skill, n] : report.noise_top_targets) {

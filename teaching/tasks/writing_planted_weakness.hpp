@@ -54,7 +54,10 @@ struct PlantedWeaknessReport {
   std::vector<std::string> pretest_words;
   std::vector<PlantedLetterRow> letters;
   int noise_learners = 0;
-  int noise_without_confident_target = 0;      // no target with expertise < kConfidentTargetExpertise
+  int noise_without_confident_target = 0;  // no target with expertise < kConfidentTargetExpertise
+  // The same over the targets the trainer would drill: the ranking without skills too brief to drill alone
+  // (teachable_skills.hpp), as many as there are targets.
+  int noise_without_confident_drill_target = 0;
   std::vector<double> noise_lowest_expertise;  // per noise-only learner: its weakest target's E
   std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
 };

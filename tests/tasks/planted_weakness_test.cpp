@@ -262,8 +262,14 @@ TEST(PlantedWeakness, WritingQualityAwareExpertiseFindsTheBadlyWrittenLetterUnde
     const PlantedWeaknessReport r = measure_planted_weaknesses(*s.kit, ClassicDrawerGlyphs::load(), 3, 3, mode);
     int top = 0;
     for (const PlantedLetterRow& row : r.letters) top += row.top_target;
-    std::printf("%s: %d of 15 planted letters are the first target, %d of %d noise-only learners quiet\n",
-                expertise_mode_name(mode).c_str(), top, r.noise_without_confident_target, r.noise_learners);
+    std::printf(
+        "%s: %d of 15 planted letters are the first target, %d of %d noise-only learners quiet (%d with "
+        "no confident drill target)\n",
+        expertise_mode_name(mode).c_str(), top, r.noise_without_confident_target, r.noise_learners,
+        r.noise_without_confident_drill_target);
+    // The drill targets are the ranking without the skills too brief to drill: never weaker than the targets.
+    EXPECT_GE(r.noise_without_confident_drill_target, r.noise_without_confident_target);
+    EXPECT_LE(r.noise_without_confident_drill_target, r.noise_learners);
     return std::pair{top, r};
   };
   const int quality_aware = measure(ExpertiseMode::QualityAware).first;
