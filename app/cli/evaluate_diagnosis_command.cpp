@@ -3,18 +3,25 @@
 // drivers on each device with a planted deficit (never reversing, weak steering, late braking) or none take
 // the kit's pre-test; the table says how often the deficit's skills fill the top targets and how often a
 // learner gets no skill below the expertise threshold, for Alg. 2 and for quality-aware expertise.
+// --noise-floor prints the learners' segment scores instead (the noise floor the noise-only learners give
+// quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
+// measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli/command_registry.hpp"
 #include "app/cli/task_option.hpp"
+#include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
 
@@ -28,7 +35,40 @@ struct EvaluateDiagnosisArgs {
   int pretest = 5;  // the app's pre-test (SessionSettings::pretest_count)
   unsigned long long seed = 2;
   bool details = false;
+  bool noise_floor = false;
+  std::optional<double> apply_noise_floor;
 };
+
+// The shipped kit, or (--apply-noise-floor) the same model and pool with a noise floor.
+std::unique_ptr<TaskKit> make_kit(const EvaluateDiagnosisArgs& args) {
+  if (!args.apply_noise_floor) return make_task_kit(TaskKind::parking, args.model);
+  const std::filesystem::path model =
+      args.model.empty() ? asset_dir() / "models" / "parking.pt" : std::filesystem::path(args.model);
+  ParkingKitOptions options{default_parking_pool_file(), ParkingPoolOptions{100, 0, GoalRegion::WholeLot},
+                            args.apply_noise_floor};
+  return std::make_unique<ParkingKit>(std::make_shared<CompileExtractor>(CompileExtractor::load(model, "parking")), "",
+                                      options);
+}
+
+// Each deficit's learners' segment scores against the noise-only learners' floor.
+void print_noise_floor(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
+  std::optional<double> floor;
+  for (PlantedDeficit d : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
+                           PlantedDeficit::LateBraking}) {
+    std::vector<std::vector<Json>> learners;
+    for (int i = 0; i < args.learners; ++i) learners.push_back(planted_learner_trials(kit, pretest, d, args.seed, i));
+    const NoiseFloorCalibration c = calibrate_noise_floor(kit, learners);
+    if (!floor) {
+      floor = c.floor();
+      std::printf("%s", noise_floor_report(c, kit.execution_noise_floor()).c_str());
+      continue;
+    }
+    const auto above = std::count_if(c.scores.begin(), c.scores.end(), [&](double q) { return q >= *floor; });
+    std::printf("%s: %zu segments, 1 %% %.3f, 5 %% %.3f, median %.3f; %.0f %% score at or above the noise floor\n",
+                deficit_name(d).c_str(), c.scores.size(), c.percentile(1.0), c.percentile(5.0), c.percentile(50.0),
+                100.0 * static_cast<double>(above) / static_cast<double>(c.scores.size()));
+  }
+}
 
 // Every learner's first targets (deficit skills starred) for one deficit and mode, to see what goes wrong.
 void print_details(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
@@ -60,7 +100,7 @@ std::string skill_list(const std::vector<int>& skills) {
 
 int run(const EvaluateDiagnosisArgs& args) {
   if (args.task != TaskKind::parking) throw InputError("evaluate-diagnosis", "only --task parking is measured here");
-  const std::unique_ptr<TaskKit> base = make_task_kit(TaskKind::parking, args.model);
+  const std::unique_ptr<TaskKit> base = make_kit(args);
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
@@ -72,6 +112,10 @@ int run(const EvaluateDiagnosisArgs& args) {
                 skill_list(deficit_skills(d, kit->skill_motions())).c_str());
   std::printf("quiet thresholds (expertise per pre-test trial): Alg. 2 %.3f, quality-aware %.3f\n\n",
               kQuietExpertiseAlg2, kQuietExpertiseQualityAware);
+  if (args.noise_floor) {
+    print_noise_floor(*kit, pretest, args);
+    return 0;
+  }
   if (args.details) {
     for (int m = 0; m < kit->extractor().num_skills(); ++m) {
       const ParkingSkillMotion& s = kit->skill_motions()[static_cast<std::size_t>(m)];
@@ -110,8 +154,16 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
       ->check(CLI::Range(1, 100));
   sub.add_option("--seed", args->seed, "Seed of the learners (1 was used to choose the thresholds)")
       ->capture_default_str();
-  sub.add_flag("--details", args->details,
-               "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
+  auto* details =
+      sub.add_flag("--details", args->details,
+                   "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
+  sub.add_flag("--noise-floor", args->noise_floor,
+               "Instead of the table: the learners' segment scores, the noise floor the noise-only learners give "
+               "quality-aware expertise and how much of each deficit's segments score above it")
+      ->excludes(details);
+  sub.add_option("--apply-noise-floor", args->apply_noise_floor,
+                 "Measure with this noise floor in quality-aware expertise (<= 0; the shipped parking kit uses none)")
+      ->check(CLI::Range(-10.0, 0.0));
   return [args] { return run(*args); };
 }
 

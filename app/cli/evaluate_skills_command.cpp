@@ -1,11 +1,14 @@
 // skillcoach evaluate-skills --task T (--model FILE | --time-heuristic) [--count N] [--seed S]
-// [--robustness | --planted-weaknesses [--learners N] | --realistic-drivers]: segments freshly
+// [--robustness | --planted-weaknesses [--learners N] | --noise-floor [--learners N] | --realistic-drivers]:
+// segments freshly
 // generated expert demonstrations (a seed other than the model's training seed) with the model, or with the
 // paper's Time Heuristic baseline as the yardstick, and prints the quality report
 // (teaching/tasks/skill_quality.hpp) as JSON: writing boundary precision/recall/F1 against the true character
 // boundaries, parking skill purity, per-skill usage, and (models only) the action reconstruction error.
 // For writing, --robustness prints the same model's figures on realistic learners (writing_robustness.hpp)
-// and --planted-weaknesses Alg. 2's recovery of a badly written letter (writing_planted_weakness.hpp), as tables.
+// and --planted-weaknesses Alg. 2's recovery of a badly written letter (writing_planted_weakness.hpp), as tables;
+// --noise-floor calibrates quality-aware expertise's noise floor on the noise-only learners
+// (execution_noise_floor.hpp).
 // --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
 // drives' (docs/skills.md, "Robustness on realistic learners").
 #include <CLI/CLI.hpp>
@@ -29,6 +32,7 @@
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
@@ -49,6 +53,7 @@ struct EvaluateArgs {
   bool details = false;
   bool robustness = false;
   bool planted = false;
+  bool noise_floor = false;
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
@@ -141,6 +146,26 @@ int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
   return 0;
 }
 
+// Quality-aware expertise's noise floor (writing): the segment scores of the planted table's noise-only learners.
+int print_noise_floor(const EvaluateArgs& args, std::uint64_t seed) {
+  if (args.task != TaskKind::writing)
+    throw InputError("--noise-floor",
+                     "only for --task writing here (parking: "
+                     "evaluate-diagnosis --noise-floor)");
+  const WritingKit kit(robustness_extractor(args), "");
+  std::fprintf(stderr, "evaluate-skills: %d noise-only learners (seed %llu)...\n", args.learners,
+               static_cast<unsigned long long>(seed));
+  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
+  const std::vector<std::string> words = pretest_words(kit);
+  std::vector<std::vector<Json>> learners;
+  for (int i = 0; i < args.learners; ++i)
+    learners.push_back(planted_pretest_trials(glyphs, words, noise_only_learner(seed, i)));
+  std::printf("%s, seed %llu: %s", args.time_heuristic ? "time heuristic" : args.model.c_str(),
+              static_cast<unsigned long long>(seed),
+              noise_floor_report(calibrate_noise_floor(kit, learners), kit.execution_noise_floor()).c_str());
+  return 0;
+}
+
 int run(const EvaluateArgs& args) {
   if (args.model.empty() && !args.time_heuristic)
     throw InputError("evaluate-skills", "give a model (--model FILE) or --time-heuristic");
@@ -157,6 +182,7 @@ int run(const EvaluateArgs& args) {
   }
   if (args.robustness) return print_robustness(args, seed);
   if (args.planted) return print_planted_weaknesses(args, seed);
+  if (args.noise_floor) return print_noise_floor(args, seed);
   std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
                std::string(to_string(args.task)).c_str(), static_cast<unsigned long long>(seed));
   const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
@@ -215,7 +241,12 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
       "--planted-weaknesses", args->planted,
       "Writing: print the planted-weakness table instead (Alg. 2 on the app's pre-test written by learners who "
       "write one letter badly and the rest with realistic noise; docs/skills.md \"Robustness\")");
-  sub.add_option("--learners", args->learners, "Learners per letter (and noise-only learners) for --planted-weaknesses")
+  auto* noise_floor = sub.add_flag(
+      "--noise-floor", args->noise_floor,
+      "Writing: print the noise-only learners' segment scores instead, and the noise floor they give quality-aware "
+      "expertise (docs/skills.md \"Noise floor\")");
+  sub.add_option("--learners", args->learners,
+                 "Learners per letter (and noise-only learners) for --planted-weaknesses, learners for --noise-floor")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   auto* expertise = sub.add_option("--expertise", args->expertise,
@@ -225,6 +256,7 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
                         ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
   expertise->needs(planted);
   planted->excludes(sub.get_option("--robustness"));
+  noise_floor->excludes(planted)->excludes(sub.get_option("--robustness"));
   return [args] { return run(*args); };
 }
 

@@ -11,6 +11,9 @@
 namespace sc {
 namespace {
 
+// waived[t][k]: Alg. 2's "missing" of trial t's k-th expert segment is not charged (see the header).
+using Waivers = std::vector<std::vector<bool>>;
+
 void check(const ExecutionTrial& t, std::size_t index) {
   const std::string where = "expertise trial " + std::to_string(index);
   if (t.segments.size() != t.trial.expert.segments.size())
@@ -21,7 +24,7 @@ void check(const ExecutionTrial& t, std::size_t index) {
 }
 
 // The largest penalty of `skill` over the trials, with where it happened.
-TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, ExpertiseMode mode) {
+TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, const Waivers& waived, ExpertiseMode mode) {
   TargetWhy best;
   best.skill = skill;
   best.delta = -1.0;
@@ -33,7 +36,7 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, Expertise
       const SkillSegment& e = et.trial.expert.segments[k];
       if (e.skill != skill) continue;
       const double j = static_cast<double>(k + 1);
-      const double missing = shown.count(skill) ? 0.0 : -et.trial.student_reward / j;
+      const double missing = shown.count(skill) || waived[t][k] ? 0.0 : -et.trial.student_reward / j;
       const double error = mode == ExpertiseMode::QualityAware ? -kExecutionWeight * et.segments[k].reward / j : 0.0;
       const double delta = std::max(missing, error);
       if (delta <= best.delta) continue;
@@ -62,9 +65,10 @@ double median_of(std::vector<double> values) {
 }
 
 // Each segment's reward relative to the learner's usual spread: only the part below the outlier cut
-// (median - kOutlierCut robust standard deviations) counts, so what stands out from how this learner does
-// everything else is charged, and the ordinary scatter of a hand or a device is not.
-std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials) {
+// (median - kOutlierCut robust standard deviations) and the noise floor counts, so what stands out from how
+// this learner does everything else, and from what noise does, is charged, and the ordinary scatter of a
+// hand or a device is not.
+std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials, std::optional<double> floor) {
   std::vector<double> rewards;
   for (const ExecutionTrial& t : trials)
     for (const SegmentExecution& s : t.segments) rewards.push_back(s.reward);
@@ -73,10 +77,33 @@ std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> tria
   std::vector<double> deviations;
   for (double r : rewards) deviations.push_back(std::abs(r - median));
   const double spread = kMadToStandardDeviation * median_of(deviations);
-  const double cut = median - kOutlierCut * spread;
+  const double cut = std::min(median - kOutlierCut * spread, floor.value_or(0.0));
   for (ExecutionTrial& t : trials)
     for (SegmentExecution& s : t.segments) s.reward = std::min(0.0, s.reward - cut);
   return trials;
+}
+
+Waivers missing_waivers(const std::vector<ExecutionTrial>& trials, ExpertiseMode mode, std::optional<double> floor) {
+  Waivers out;
+  for (const ExecutionTrial& t : trials) {
+    out.emplace_back(t.segments.size(), false);
+    if (mode != ExpertiseMode::QualityAware || !floor) continue;
+    for (std::size_t k = 0; k < t.segments.size(); ++k) out.back()[k] = t.segments[k].reward >= *floor;
+  }
+  return out;
+}
+
+// Takes back Alg. 2's penalties the waivers cancel.
+void waive_missing(ExpertiseEstimate& estimate, const Waivers& waived) {
+  for (std::size_t m = 0; m < estimate.contributions.size(); ++m) {
+    std::vector<ExpertiseContribution>& list = estimate.contributions[m];
+    const auto cancelled = [&](const ExpertiseContribution& c) {
+      return waived[static_cast<std::size_t>(c.trial)][static_cast<std::size_t>(c.position - 1)];
+    };
+    for (const ExpertiseContribution& c : list)
+      if (cancelled(c)) estimate.expertise[m] += c.delta;
+    list.erase(std::remove_if(list.begin(), list.end(), cancelled), list.end());
+  }
 }
 
 }  // namespace
@@ -106,14 +133,19 @@ const char* target_reason_words(TargetReason reason) {
 }
 
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given, int num_skills,
-                                                int num_targets, ExpertiseMode mode) {
+                                                int num_targets, ExpertiseMode mode,
+                                                std::optional<double> noise_floor) {
   for (std::size_t t = 0; t < given.size(); ++t) check(given[t], t);
-  const std::vector<ExecutionTrial> trials = relative_to_learner(given);
+  if (noise_floor && !(std::isfinite(*noise_floor) && *noise_floor <= 0.0))
+    throw InputError("quality-aware expertise", "noise floor " + std::to_string(*noise_floor) + " must be <= 0");
+  const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor);
+  const Waivers waived = missing_waivers(given, mode, noise_floor);
   std::vector<ExpertiseTrial> plain;
   for (const ExecutionTrial& t : given) plain.push_back(t.trial);
   ExecutionExpertise out;
   out.estimate = estimate_expertise(plain, num_skills, num_targets);
   if (mode == ExpertiseMode::QualityAware) {
+    waive_missing(out.estimate, waived);
     for (std::size_t t = 0; t < trials.size(); ++t) {
       const ExecutionTrial& et = trials[t];
       for (std::size_t k = 0; k < et.segments.size(); ++k) {
@@ -128,7 +160,7 @@ ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial
     }
     rank_expertise(out.estimate, num_targets);
   }
-  for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, mode));
+  for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, waived, mode));
   return out;
 }
 

@@ -3,21 +3,29 @@
 // segmentation, so a skill done recognisably but badly is never diagnosed, and a skill the segmentation
 // happens to miss is charged the whole trial's reward. This adds a per-skill execution term:
 //
-//   E^q_m = E_m (Alg. 2, unchanged)  +  w · Σ_ξ Σ_{j : m^e_j = m} min(0, q_{ξ,j} - (q̃ - c·s)) / j
+//   E^q_m = E_m (Alg. 2, unchanged)  +  w · Σ_ξ Σ_{j : m^e_j = m} min(0, q_{ξ,j} - min(q̃ - c·s, f)) / j
 //
 // where q_{ξ,j} <= 0 is the task's own reward of the learner's part aligned (dynamic time warping,
 // trace_alignment.hpp) with the expert's j-th segment of trial ξ, relative to a perfect copy (0), q̃ the
 // median of the learner's q over all the trials' segments, s their robust standard deviation (scaled
-// median absolute deviation) and c = kOutlierCut. The 1/j weight is Alg. 2's: early skills weigh more.
-// w = kExecutionWeight.
+// median absolute deviation), c = kOutlierCut, and f the task's noise floor (below). The 1/j weight is
+// Alg. 2's: early skills weigh more. w = kExecutionWeight.
 // Why relative to the learner: a learner's input device and hand spoil every segment a little (a mouse's
 // corners, a wobble wider than the writing score's 3 px tolerance); a skill is done badly when it is done
 // clearly worse than the learner does the rest - an outlier among their own segments, not merely below
 // their median (docs/skills.md, "Quality-aware expertise on the writing table").
+// Why a noise floor as well: a tidy learner's segments mostly score 0, their spread is then near 0 and any
+// slight wobble would stand out. The floor f is what realistic noise alone reaches (a low percentile of
+// noise-only learners' segment scores, calibrated per task and model: TaskKit::execution_noise_floor), so
+// only what is both unusual for this learner and worse than noise makes is charged. The floor also checks
+// Alg. 2's "missing": a skill the segmentation missed in a trial although the learner's aligned part
+// scores at or above f is not charged - the learner did it as well as noise allows, the segmenter missed it.
+// Without a floor (nullopt) both rules are as without it: the outlier cut alone, every "missing" charged.
 //
 // Why each target was chosen is its largest penalty: "missing" (Alg. 2's) or "done with a large error"
 // (the execution term), with the trial, the expert's steps and the learner's aligned steps.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,9 +82,11 @@ struct ExecutionExpertise {
   std::vector<TargetWhy> why;  // one per estimate.targets entry, in that order
 };
 
-// mode Alg2: estimate_expertise exactly (why from its penalties); QualityAware: the formula above.
-// Throws InputError as estimate_expertise does, and for segments not parallel to the expert's or q > 0.
+// mode Alg2: estimate_expertise exactly (why from its penalties; noise_floor unused); QualityAware: the
+// formula above, with the noise floor's two rules when one is given (<= 0). Throws InputError as
+// estimate_expertise does, and for segments not parallel to the expert's, q > 0 or a floor > 0.
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
-                                                int num_targets, ExpertiseMode mode);
+                                                int num_targets, ExpertiseMode mode,
+                                                std::optional<double> noise_floor = std::nullopt);
 
 }  // namespace sc

@@ -53,7 +53,7 @@ ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTria
   std::vector<ExecutionTrial> evidence;
   for (std::size_t i = 0; i < trials.size(); ++i)
     evidence.push_back(execution_trial(kit, std::move(plain[i]), trials[i].expert_steps, steps[i], mode));
-  return estimate_execution_expertise(evidence, skills, targets, mode).estimate;
+  return estimate_execution_expertise(evidence, skills, targets, mode, kit.execution_noise_floor()).estimate;
 }
 
 std::optional<SkillExample> example_of_skill(const std::vector<ExpertDemo>& pool, int skill) {

@@ -6,6 +6,7 @@
 // Trials travel as trajectory-file documents (docs/trajectory-format.md): {"task", "scenario", ...}.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -73,6 +74,10 @@ class TaskKit {
   // <= 0, 0 when the learner's part repeats the expert's.
   virtual double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
                                   int begin, int end) const = 0;
+  // What realistic noise alone does to execution_reward on this task with this kit's model (a low percentile
+  // of noise-only learners' segment scores, docs/skills.md), for quality-aware expertise's noise-floor rules;
+  // nullopt where those rules measured worse (parking) - then the outlier cut alone decides.
+  virtual std::optional<double> execution_noise_floor() const = 0;
   // The expertise estimate the trainer diagnoses learners with: the one that measured better on this task's
   // planted weaknesses (docs/skills.md). Research conditions and `diagnose --expertise` may choose either.
   virtual ExpertiseMode learners_expertise() const = 0;

@@ -34,11 +34,12 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
     d.reward = kit.reward_of(trial);
     evidence.push_back(
         execution_trial(kit, {static_cast<int>(i), d.expert, d.student, d.reward}, expert_steps, learner_steps, mode));
+    d.execution = evidence.back().segments;
     out.trials.push_back(std::move(d));
   }
   const CurriculumConfig config = kit.curriculum_config();
-  ExecutionExpertise estimate =
-      estimate_execution_expertise(evidence, kit.extractor().num_skills(), config.drills.num_targets, mode);
+  ExecutionExpertise estimate = estimate_execution_expertise(
+      evidence, kit.extractor().num_skills(), config.drills.num_targets, mode, kit.execution_noise_floor());
   out.expertise = std::move(estimate.estimate);
   out.why = std::move(estimate.why);
   const DrillBuilder builder(demo_skills(pool), config.drills);

@@ -17,6 +17,9 @@ struct DiagnosedTrial {
   Segmentation expert;   // the extractor on the expert's trial for the scenario
   Segmentation student;  // the extractor on the learner's trial
   double reward = 0.0;   // kit.reward_of(trial), <= 0
+  // Per expert segment: the learner's aligned steps and, in quality-aware mode, the task's raw execution
+  // score of them (before the learner-relative cut and the noise floor; 0 in Alg. 2 mode).
+  std::vector<SegmentExecution> execution;
 };
 
 struct Diagnosis {

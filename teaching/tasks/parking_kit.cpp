@@ -29,7 +29,10 @@ std::filesystem::path default_parking_pool_file(GoalRegion region) {
 
 ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
                        const ParkingKitOptions& options)
-    : extractor_(std::move(extractor)), extractor_notice_(std::move(extractor_notice)), region_(options.pool.region) {
+    : extractor_(std::move(extractor)),
+      extractor_notice_(std::move(extractor_notice)),
+      region_(options.pool.region),
+      noise_floor_(options.execution_noise_floor) {
   if (options.pool_file.empty()) {
     build(generate_parking_pool(options.pool));
     return;

@@ -4,6 +4,7 @@
 // as the reference's episode score (the last step's reward, <= 0).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,11 @@ struct ParkingKitOptions {
   // The cached pool; empty = generate in memory only. See default_parking_pool_file().
   std::filesystem::path pool_file;
   ParkingPoolOptions pool;
+  // Quality-aware expertise's noise floor (execution_expertise.hpp). None by default: with one the
+  // never-reversing and weak-steering learners' deficits were hidden, since a deficit's segments mostly score
+  // within what noise does (docs/skills.md, "Quality-aware expertise"); `evaluate-diagnosis
+  // --apply-noise-floor` measures it.
+  std::optional<double> execution_noise_floor;
 };
 
 // asset_dir()/experts/parking_pool.json, or parking_pool_study_corner.json for the study corner.
@@ -63,6 +69,8 @@ class ParkingKit final : public TaskKit {
   // (x, y, speed) of the car; the reward's weighted distance between the learner's and the expert's motion,
   // each seen from where its part starts (parking_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  // ParkingKitOptions::execution_noise_floor (none with the ready-pool constructor).
+  std::optional<double> execution_noise_floor() const override { return noise_floor_; }
   // Alg. 2: quality-aware expertise also left most weak-steering learners quiet (docs/skills.md).
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::Alg2; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
@@ -83,6 +91,7 @@ class ParkingKit final : public TaskKit {
   std::string extractor_notice_;
   std::string pool_notice_;
   GoalRegion region_ = GoalRegion::WholeLot;
+  std::optional<double> noise_floor_;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

@@ -39,7 +39,7 @@ std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::pat
   if (task == TaskKind::parking)
     return std::make_unique<ParkingKit>(
         chosen.extractor, chosen.notice,
-        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}});
+        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}, std::nullopt});
   return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
 }
 

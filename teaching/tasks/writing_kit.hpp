@@ -13,6 +13,7 @@
 #include "engine/writing/word_trajectory.hpp"
 #include "teaching/sessions/task_kit.hpp"
 #include "teaching/tasks/writing_drill_projector.hpp"
+#include "teaching/tasks/writing_execution.hpp"
 #include "teaching/tasks/writing_skill_places.hpp"
 
 namespace sc {
@@ -60,6 +61,8 @@ class WritingKit final : public TaskKit {
   // (x, y) of the pen; the writing score's overlap credit between the expert's segment and the learner's
   // aligned pen points (writing_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
+  // Calibrated for the shipped model (writing_execution.hpp).
+  std::optional<double> execution_noise_floor() const override { return kWritingExecutionNoiseFloor; }
   // Quality-aware: it finds the letter a learner writes badly in 90-94 % of planted learners, Alg. 2 in
   // 73-81 %, because a badly written letter is usually still segmented as that letter (docs/skills.md).
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::QualityAware; }

@@ -75,10 +75,7 @@ int letter_skill(const WritingKit& kit, char letter) {
 
 ExpertiseEstimate diagnose(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
                            const std::vector<std::string>& words, const PlantedLearner& learner, ExpertiseMode mode) {
-  std::vector<Json> trials;
-  for (std::size_t i = 0; i < words.size(); ++i)
-    trials.push_back(writing::writing_trial_json(planted_trial(glyphs, words[i], learner, static_cast<int>(i))));
-  return diagnose_trials(kit, trials, learner.seed, mode).expertise;
+  return diagnose_trials(kit, planted_pretest_trials(glyphs, words, learner), learner.seed, mode).expertise;
 }
 
 }  // namespace
@@ -121,11 +118,29 @@ writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std
   return trial;
 }
 
+std::vector<Json> planted_pretest_trials(const ClassicDrawerGlyphs& glyphs, const std::vector<std::string>& words,
+                                         const PlantedLearner& learner) {
+  std::vector<Json> trials;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    trials.push_back(writing::writing_trial_json(planted_trial(glyphs, words[i], learner, static_cast<int>(i))));
+  return trials;
+}
+
+std::vector<std::string> pretest_words(const WritingKit& kit) {
+  std::vector<std::string> words;
+  for (int i : select_diverse_scenarios(demo_skills(kit.expert_pool()), SessionSettings{}.pretest_count).scenarios())
+    words.push_back(kit.gold_words()[static_cast<std::size_t>(i)].word);
+  return words;
+}
+
+PlantedLearner noise_only_learner(std::uint64_t seed, int index) {
+  return {0, LetterFault::None, Rng(seed).fork(7u + static_cast<std::uint64_t>(index)).next_u64()};
+}
+
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
                                                  int learners_per_letter, std::uint64_t seed, ExpertiseMode mode) {
   PlantedWeaknessReport report;
-  for (int i : select_diverse_scenarios(demo_skills(kit.expert_pool()), SessionSettings{}.pretest_count).scenarios())
-    report.pretest_words.push_back(kit.gold_words()[static_cast<std::size_t>(i)].word);
+  report.pretest_words = pretest_words(kit);
   const Rng root(seed);
   for (char letter : kLetters) {
     PlantedLetterRow row{letter, letter_skill(kit, letter), 0, 0, std::vector<int>(3, 0), std::vector<int>(3, 0)};
@@ -144,8 +159,7 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
   const std::vector<Segmentation> pool = demo_skills(kit.expert_pool());
   const int min_steps = kit.curriculum_config().min_skill_steps;
   for (int i = 0; i < learners_per_letter; ++i) {
-    const ExpertiseEstimate e =
-        diagnose(kit, glyphs, report.pretest_words, {0, LetterFault::None, root.fork(7u + i).next_u64()}, mode);
+    const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, noise_only_learner(seed, i), mode);
     double lowest = 0.0, lowest_drilled = 0.0;
     for (int m : e.targets) lowest = std::min(lowest, e.expertise[static_cast<std::size_t>(m)]);
     std::vector<int> drilled = teachable_ranking(e, pool, min_steps);

@@ -36,6 +36,14 @@ struct PlantedLearner {
 writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std::string& word,
                                     const PlantedLearner& learner, int word_index);
 
+// The learner's trials (documents) of the pre-test `words`, word i from planted_trial(..., i).
+std::vector<Json> planted_pretest_trials(const ClassicDrawerGlyphs& glyphs, const std::vector<std::string>& words,
+                                         const PlantedLearner& learner);
+// The app's pre-test: Alg. 1's diverse words of the kit's pool.
+std::vector<std::string> pretest_words(const WritingKit& kit);
+// Noise-only learner `index` of a run with `seed` (the planted table's noise-only row).
+PlantedLearner noise_only_learner(std::uint64_t seed, int index);
+
 // Expertise below this (Alg. 2's E_m, <= 0) counts as a confident target. Why this value: one missing
 // skill in one trial with reward -0.3 (a mediocre pre-test word) at position j = 2 costs 0.15; a noise-only
 // learner should not lose more than that on any skill.

@@ -86,6 +86,45 @@ TEST(ExecutionExpertise, AHandThatDoesEverySkillEquallyBadlyIsChargedNoExecution
   EXPECT_EQ(uneven.why.front().trial, 1);
 }
 
+// trial(): skill 2 is missing from the segmentation, yet the learner's part aligned with it scores -0.2.
+TEST(ExecutionExpertise, ANoiseFloorWaivesAMissingSkillDoneAsWellAsNoiseAllows) {
+  const ExecutionExpertise waived = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware, -0.5);
+  EXPECT_DOUBLE_EQ(waived.estimate.expertise[2], 0.0);
+  EXPECT_TRUE(waived.estimate.contributions[2].empty());
+  for (const TargetWhy& w : waived.why) EXPECT_NE(w.reason, TargetReason::Missing);
+  // Scoring worse than the floor, the miss is charged as Alg. 2 charges it.
+  const ExecutionExpertise charged = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware, -0.1);
+  EXPECT_DOUBLE_EQ(charged.estimate.expertise[2], -0.3 / 3);
+  EXPECT_EQ(charged.why.front().skill, 2);
+  EXPECT_EQ(charged.why.front().reason, TargetReason::Missing);
+  // Alg. 2 mode ignores the floor; without one every miss is charged.
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::Alg2, -0.5).estimate.expertise[2],
+                   -0.3 / 3);
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware).estimate.expertise[2],
+                   -0.3 / 3);
+}
+
+// A tidy learner: every segment within the tolerance but one slight wobble. The spread is 0, so the outlier
+// cut alone charges the wobble; with a floor only what is worse than noise makes counts.
+TEST(ExecutionExpertise, ANoiseFloorChargesOnlyWhatIsWorseThanNoiseMakes) {
+  ExecutionTrial t = trial();
+  t.trial.student = t.trial.expert;
+  t.segments = {{0.0, 0, 10}, {-0.1, 10, 20}, {0.0, 20, 30}};
+  ExecutionTrial tidy = t;
+  tidy.segments[1].reward = 0.0;
+  const std::vector<ExecutionTrial> wobble{t, tidy, tidy};
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise(wobble, 3, 2, ExpertiseMode::QualityAware).estimate.expertise[1],
+                   -0.1 / 2);
+  for (double e : estimate_execution_expertise(wobble, 3, 2, ExpertiseMode::QualityAware, -0.5).estimate.expertise)
+    EXPECT_DOUBLE_EQ(e, 0.0);
+  std::vector<ExecutionTrial> bad = wobble;
+  bad[0].segments[1].reward = -0.8;
+  const ExecutionExpertise e = estimate_execution_expertise(bad, 3, 2, ExpertiseMode::QualityAware, -0.5);
+  EXPECT_NEAR(e.estimate.expertise[1], (-0.8 + 0.5) / 2, 1e-12);
+  EXPECT_EQ(e.why.front().reason, TargetReason::LargeError);
+  EXPECT_THROW(estimate_execution_expertise(bad, 3, 2, ExpertiseMode::QualityAware, 0.1), InputError);
+}
+
 TEST(ExecutionExpertise, RefusesScoresNotParallelToTheExpertOrPositive) {
   ExecutionTrial t = trial();
   t.segments.pop_back();

@@ -15,7 +15,7 @@ namespace {
 
 const ParkingKit& projector_kit() {
   static const ParkingKit k(std::make_shared<TimeHeuristicExtractor>(3), "",
-                            ParkingKitOptions{{}, ParkingPoolOptions{6, 21}});
+                            ParkingKitOptions{{}, ParkingPoolOptions{6, 21}, std::nullopt});
   return k;
 }
 

@@ -25,7 +25,7 @@ std::shared_ptr<const SkillExtractor> time_slices() { return std::make_shared<Ti
 
 // Planning costs ~20-50 ms per scenario: one small pool shared by the tests of this file.
 const ParkingKit& kit() {
-  static const ParkingKit k(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}});
+  static const ParkingKit k(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}, std::nullopt});
   return k;
 }
 
@@ -43,8 +43,8 @@ TEST(ParkingKit, PoolIsSegmentedByTheExtractorAndTheTimeHeuristic) {
 }
 
 TEST(ParkingKit, SameSeedSamePoolOtherSeedOtherPool) {
-  const ParkingKit again(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}});
-  const ParkingKit other(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 4}});
+  const ParkingKit again(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 3}, std::nullopt});
+  const ParkingKit other(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{8, 4}, std::nullopt});
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(again.expert_pool()[i].trial, kit().expert_pool()[i].trial);
     EXPECT_NE(other.expert_pool()[i].scenario, kit().expert_pool()[i].scenario);
@@ -102,7 +102,8 @@ TEST(ParkingPool, AFileOfTheOtherRegionIsNotUsed) {
 }
 
 TEST(ParkingKit, AStudyCornerKitDrawsFreshScenariosInTheCorner) {
-  const ParkingKit corner(time_slices(), "", ParkingKitOptions{{}, ParkingPoolOptions{2, 3, GoalRegion::StudyCorner}});
+  const ParkingKit corner(time_slices(), "",
+                          ParkingKitOptions{{}, ParkingPoolOptions{2, 3, GoalRegion::StudyCorner}, std::nullopt});
   EXPECT_EQ(corner.goal_region(), GoalRegion::StudyCorner);
   EXPECT_EQ(kit().goal_region(), GoalRegion::WholeLot);
   std::set<int> spots;

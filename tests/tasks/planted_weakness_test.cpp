@@ -277,5 +277,26 @@ TEST(PlantedWeakness, WritingQualityAwareExpertiseFindsTheBadlyWrittenLetterUnde
   EXPECT_GE(quality_aware, measure(ExpertiseMode::Alg2).first);
 }
 
+// Noise-only realistic learners (the planted table's background hand, no fault) at a seed no table uses: with
+// the noise floor they get no confident target (measured: 10 of 10; with the outlier cut alone 6 of 10).
+TEST(PlantedWeakness, WritingNoiseOnlyLearnersGetNoConfidentTarget) {
+  ASSERT_TRUE(std::filesystem::exists(shipped_writing_model()));
+  const WritingSetup& s = writing_setup();
+  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
+  const std::vector<std::string> words = pretest_words(*s.kit);
+  int quiet = 0;
+  const int learners = 10;
+  for (int i = 0; i < learners; ++i) {
+    const PlantedLearner learner = noise_only_learner(23, i);
+    const Diagnosis d = diagnose_trials(*s.kit, planted_pretest_trials(glyphs, words, learner), learner.seed,
+                                        s.kit->learners_expertise());
+    double lowest = 0.0;
+    for (int m : d.expertise.targets) lowest = std::min(lowest, d.expertise.expertise[static_cast<std::size_t>(m)]);
+    quiet += lowest >= kConfidentTargetExpertise;
+  }
+  std::printf("%d of %d noise-only learners without a confident target\n", quiet, learners);
+  EXPECT_GE(quiet, learners - 1);
+}
+
 }  // namespace
 }  // namespace sc

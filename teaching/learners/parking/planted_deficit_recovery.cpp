@@ -23,8 +23,8 @@ std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<Parkin
   return out;
 }
 
-LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
-                                        ExpertiseMode mode, std::uint64_t seed, int learner) {
+std::vector<Json> planted_learner_trials(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
+                                         std::uint64_t seed, int learner) {
   const Rng learner_rng = Rng(seed).fork(static_cast<std::uint64_t>(learner));
   Rng profile_rng = learner_rng;
   const DriveDevice device = static_cast<DriveDevice>(learner % 3);
@@ -37,6 +37,12 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
     trials.push_back(
         parking_trial_to_json(realistic_drive(parse_parking_trial(expert_doc, "expert pool"), profile, drive_rng)));
   }
+  return trials;
+}
+
+LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
+                                        ExpertiseMode mode, std::uint64_t seed, int learner) {
+  const std::vector<Json> trials = planted_learner_trials(kit, pretest, deficit, seed, learner);
   const Diagnosis d = diagnose_trials(kit, trials, seed, mode);
   LearnerOutcome out;
   out.targets = d.expertise.targets;

@@ -43,7 +43,12 @@ struct LearnerOutcome {
   bool quiet = false;              // weakest_per_trial >= the mode's threshold
 };
 
-// One learner's diagnosis. `pretest`: indices into the kit's pool.
+// Learner `learner`'s pre-test trials (documents), as the spec above drives them. `pretest`: indices into the
+// kit's pool.
+std::vector<Json> planted_learner_trials(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
+                                         std::uint64_t seed, int learner);
+
+// One learner's diagnosis.
 LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
                                         ExpertiseMode mode, std::uint64_t seed, int learner);
 

@@ -42,7 +42,8 @@ const Setup& setup() {
   static const Setup s = [] {
     Setup out;
     auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
-    out.kit = std::make_unique<ParkingKit>(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}});
+    out.kit =
+        std::make_unique<ParkingKit>(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt});
     out.pretest = select_diverse_scenarios(demo_skills(out.kit->expert_pool()), 5).scenarios();
     return out;
   }();

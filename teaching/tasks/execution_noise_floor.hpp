@@ -1,0 +1,36 @@
+#pragma once
+// Calibrating quality-aware expertise's noise floor (execution_expertise.hpp): what realistic noise alone
+// does to a task's execution score. A learner who writes or drives everything as the expert does, only with
+// a realistic hand and device, still scores below 0 on many segments; the floor is the score that such
+// noise reaches on only kNoiseFloorPercentile % of segments, so a segment scoring worse is evidence of a
+// deficit and one scoring better is not.
+//
+// Spec. Every learner's trials are diagnosed as the app diagnoses them (diagnose_trials, quality-aware);
+// the scores are the raw execution scores of all expert segments of all trials (DiagnosedTrial::execution).
+// Percentiles interpolate linearly between order statistics. The shipped kits' floors are calibrated on the
+// planted tables' noise-only learners at seed 0, which no table is reported at (docs/skills.md).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "teaching/sessions/task_kit.hpp"
+
+namespace sc {
+
+// Chosen before the first calibration and not varied: one segment in a hundred.
+inline constexpr double kNoiseFloorPercentile = 1.0;
+
+struct NoiseFloorCalibration {
+  int learners = 0;
+  std::vector<double> scores;         // every segment's raw execution score, ascending
+  double percentile(double p) const;  // p in [0, 100]; InputError when there are no scores
+  double floor() const { return percentile(kNoiseFloorPercentile); }
+};
+
+// `learners`: each learner's pre-test trials (documents of the kit's task).
+NoiseFloorCalibration calibrate_noise_floor(const TaskKit& kit, const std::vector<std::vector<Json>>& learners);
+
+// "noise-only segment scores (N segments of L learners): 1 % -0.50, 5 % ..., median ...; kit's floor ..."
+std::string noise_floor_report(const NoiseFloorCalibration& calibration, std::optional<double> kit_floor);
+
+}  // namespace sc

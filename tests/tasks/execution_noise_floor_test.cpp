@@ -1,0 +1,47 @@
+#include "teaching/tasks/execution_noise_floor.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/core/asset_paths.hpp"
+#include "engine/core/error.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
+#include "teaching/tasks/writing_planted_weakness.hpp"
+
+namespace sc {
+namespace {
+
+TEST(NoiseFloorCalibration, PercentilesInterpolateBetweenOrderStatistics) {
+  NoiseFloorCalibration c;
+  EXPECT_THROW(c.percentile(1.0), InputError);
+  c.scores = {-1.0, -0.5, -0.25, 0.0, 0.0};
+  EXPECT_DOUBLE_EQ(c.percentile(0.0), -1.0);
+  EXPECT_DOUBLE_EQ(c.percentile(100.0), 0.0);
+  EXPECT_DOUBLE_EQ(c.percentile(50.0), -0.25);
+  EXPECT_DOUBLE_EQ(c.percentile(12.5), -0.75);  // halfway between the first two of five
+  EXPECT_DOUBLE_EQ(c.floor(), c.percentile(kNoiseFloorPercentile));
+}
+
+// The writing kit's floor is the calibration of the shipped model (writing_execution.hpp: 200 learners at
+// seed 0 gave -0.525). 30 of those learners must bracket it between their 0.5th and 3rd percentiles; a new
+// model that segments differently moves the floor and fails this until kWritingExecutionNoiseFloor is
+// re-calibrated.
+TEST(WritingNoiseFloor, TheShippedFloorIsTheShippedModelsCalibration) {
+  ASSERT_TRUE(std::filesystem::exists(asset_dir() / "models" / "writing.pt"));
+  const auto kit = make_task_kit(TaskKind::writing);
+  ASSERT_TRUE(kit->extractor_notice().empty()) << kit->extractor_notice();
+  const auto& writing = dynamic_cast<const WritingKit&>(*kit);
+  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
+  const std::vector<std::string> words = pretest_words(writing);
+  std::vector<std::vector<Json>> learners;
+  for (int i = 0; i < 30; ++i) learners.push_back(planted_pretest_trials(glyphs, words, noise_only_learner(0, i)));
+  const NoiseFloorCalibration c = calibrate_noise_floor(*kit, learners);
+  std::printf("%s", noise_floor_report(c, kit->execution_noise_floor()).c_str());
+  ASSERT_TRUE(kit->execution_noise_floor().has_value());
+  EXPECT_GE(*kit->execution_noise_floor(), c.percentile(0.5));
+  EXPECT_LE(*kit->execution_noise_floor(), c.percentile(3.0));
+}
+
+}  // namespace
+}  // namespace sc
