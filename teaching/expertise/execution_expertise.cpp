@@ -93,16 +93,18 @@ Waivers missing_waivers(const std::vector<ExecutionTrial>& trials, ExpertiseMode
   return out;
 }
 
-// Takes back Alg. 2's penalties the waivers cancel.
+// Takes back Alg. 2's penalties the waivers cancel. E_m is summed again from the penalties kept, in Alg. 2's
+// order, so a skill whose every penalty was waived is exactly 0 (not a rounding residue that ranks it).
 void waive_missing(ExpertiseEstimate& estimate, const Waivers& waived) {
   for (std::size_t m = 0; m < estimate.contributions.size(); ++m) {
     std::vector<ExpertiseContribution>& list = estimate.contributions[m];
     const auto cancelled = [&](const ExpertiseContribution& c) {
       return waived[static_cast<std::size_t>(c.trial)][static_cast<std::size_t>(c.position - 1)];
     };
-    for (const ExpertiseContribution& c : list)
-      if (cancelled(c)) estimate.expertise[m] += c.delta;
+    if (std::none_of(list.begin(), list.end(), cancelled)) continue;
     list.erase(std::remove_if(list.begin(), list.end(), cancelled), list.end());
+    estimate.expertise[m] = 0.0;
+    for (const ExpertiseContribution& c : list) estimate.expertise[m] -= c.delta;
   }
 }
 

@@ -89,7 +89,8 @@ TEST(ExecutionExpertise, AHandThatDoesEverySkillEquallyBadlyIsChargedNoExecution
 // trial(): skill 2 is missing from the segmentation, yet the learner's part aligned with it scores -0.2.
 TEST(ExecutionExpertise, ANoiseFloorWaivesAMissingSkillDoneAsWellAsNoiseAllows) {
   const ExecutionExpertise waived = estimate_execution_expertise({trial()}, 3, 2, ExpertiseMode::QualityAware, -0.5);
-  EXPECT_DOUBLE_EQ(waived.estimate.expertise[2], 0.0);
+  EXPECT_EQ(waived.estimate.expertise[2], 0.0);  // exactly: a waived skill is not "penalised" by a residue
+  EXPECT_FALSE(waived.estimate.penalised(2));
   EXPECT_TRUE(waived.estimate.contributions[2].empty());
   for (const TargetWhy& w : waived.why) EXPECT_NE(w.reason, TargetReason::Missing);
   // Scoring worse than the floor, the miss is charged as Alg. 2 charges it.
