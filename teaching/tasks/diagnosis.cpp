@@ -68,6 +68,8 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
                       {"expert_skills", segmentation_json(t.expert)}});
   out["trials"] = std::move(trials);
   out["expertise_mode"] = expertise_mode_name(diagnosis.mode);
+  const std::optional<double> floor = kit.execution_noise_floor();
+  out["noise_floor"] = diagnosis.mode == ExpertiseMode::QualityAware && floor ? Json(*floor) : Json(nullptr);
   out["expertise"] = expertise_to_json(diagnosis.expertise);
   Json targets = Json::array();
   for (std::size_t k = 0; k < diagnosis.expertise.targets.size(); ++k) {

@@ -39,7 +39,8 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
 
 Json segmentation_json(const Segmentation& segmentation);
 // {"task", "extractor", "extractor_notice", "trials":[{scenario, pool_index, reward, skills, expert_skills}],
-//  "expertise_mode":"alg2"|"quality-aware", "expertise":{...}, "targets":[{skill, expertise, description,
+//  "expertise_mode":"alg2"|"quality-aware", "noise_floor": the kit's execution noise floor the quality-aware
+//  estimate used (null: none, or Alg. 2), "expertise":{...}, "targets":[{skill, expertise, description,
 //  "why":{"reason":"missing"|"done with a large error here"|"no mistake seen", "trial", "penalty", "expert_steps":[b,
 //  e], "learner_steps":[b, e]}}], "drills":[{plan..., "skills_described", "steps", "success", "return", "ghost_path",
 //  "segment_starts", "trial"}]}

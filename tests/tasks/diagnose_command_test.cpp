@@ -51,6 +51,9 @@ TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
   const Json d = read_json_file(out);
   EXPECT_EQ(d.at("task"), "writing");
   EXPECT_EQ(d.at("expertise_mode"), "quality-aware");  // the trainer's default for writing
+  ASSERT_TRUE(d.at("noise_floor").is_number());        // writing's calibrated floor, inside the score's range
+  EXPECT_LT(d.at("noise_floor").get<double>(), 0.0);
+  EXPECT_GT(d.at("noise_floor").get<double>(), -1.0);
   ASSERT_EQ(d.at("trials").size(), 1u);
   EXPECT_EQ(d.at("trials")[0].at("file"), trial.string());
   EXPECT_LT(d.at("trials")[0].at("reward").get<double>(), -0.5);  // a straight line is far from the word
@@ -107,6 +110,8 @@ TEST(DiagnoseCommand, QualityAwareExpertiseAddsToAlg2AndEveryTargetSaysWhyAndWhe
   const Json a = read_json_file(alg2), q = read_json_file(quality);
   EXPECT_EQ(a.at("expertise_mode"), "alg2");
   EXPECT_EQ(q.at("expertise_mode"), "quality-aware");
+  EXPECT_TRUE(a.at("noise_floor").is_null());
+  EXPECT_TRUE(q.at("noise_floor").is_null());  // parking uses none
   const Json& ea = a.at("expertise").at("expertise");
   const Json& eq = q.at("expertise").at("expertise");
   for (std::size_t m = 0; m < ea.size(); ++m) EXPECT_LE(eq[m].get<double>(), ea[m].get<double>() + 1e-12) << m;
