@@ -120,9 +120,10 @@ int run(const EvaluateDiagnosisArgs& args) {
     for (int m = 0; m < kit->extractor().num_skills(); ++m) {
       const ParkingSkillMotion& s = kit->skill_motions()[static_cast<std::size_t>(m)];
       std::printf(
-          "  skill %2d: %-64s %4d steps, speed %5.2f m/s, reversing %3.0f %%, sharp %3.0f %%, braking %3.0f %%\n", m,
-          kit->describe_skill(m).c_str(), s.steps, s.mean_speed, 100 * s.reverse_fraction, 100 * s.sharp_fraction,
-          100 * s.braking_fraction);
+          "  skill %2d: %-70s %4d steps, speed %5.2f m/s, u0 %5.2f, reversing %3.0f %%, sharp %3.0f %%, braking %3.0f "
+          "%%\n",
+          m, kit->describe_skill(m).c_str(), s.steps, s.mean_speed, s.mean_acceleration, 100 * s.reverse_fraction,
+          100 * s.sharp_fraction, 100 * s.braking_fraction);
     }
     print_details(*kit, pretest, args);
     return 0;

@@ -17,6 +17,10 @@ constexpr double kSharpSteer = 0.5;     // |u1| above this is more than half loc
 // A skill whose mean steering is near zero but which steers beyond half lock on most of its steps turns
 // hard both ways (e.g. a reversing correction), so "straight" would tell the learner the opposite.
 constexpr double kMostSteps = 0.5;
+// A skill moving each way on at least this share of its steps, with the pedal against its mean motion,
+// stops and turns around (the planner's direction changes): "driving forward, braking" would hide that half
+// of it reverses.
+constexpr double kBothWays = 0.25;
 }  // namespace
 
 std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequence>& experts,
@@ -62,8 +66,14 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
   return out;
 }
 
+bool motion_turns_around(const ParkingSkillMotion& m) {
+  return m.steps > 0 && std::abs(m.mean_speed) >= kMovingSpeed && m.mean_acceleration * m.mean_speed < 0.0 &&
+         m.reverse_fraction >= kBothWays && m.reverse_fraction <= 1.0 - kBothWays;
+}
+
 bool motion_reverses(const ParkingSkillMotion& m) {
-  return m.steps > 0 && (m.mean_speed <= -kMovingSpeed || (m.mean_speed < kMovingSpeed && m.mean_acceleration < 0.0));
+  return m.steps > 0 && (m.mean_speed <= -kMovingSpeed || (m.mean_speed < kMovingSpeed && m.mean_acceleration < 0.0) ||
+                         motion_turns_around(m));
 }
 
 bool motion_brakes(const ParkingSkillMotion& m) {
@@ -74,7 +84,11 @@ bool motion_brakes(const ParkingSkillMotion& m) {
 std::string describe_parking_motion(const ParkingSkillMotion& m) {
   if (m.steps == 0) return "unused skill";
   std::string words;
-  if (m.mean_speed <= -kMovingSpeed)
+  const bool turns_around = motion_turns_around(m);
+  if (turns_around)
+    words = m.mean_acceleration < 0.0 ? "stopping from driving forward, then reversing"
+                                      : "stopping from reversing, then driving forward";
+  else if (m.mean_speed <= -kMovingSpeed)
     words = "reversing";
   else if (m.mean_speed >= kMovingSpeed)
     words = "driving forward";
@@ -89,7 +103,7 @@ std::string describe_parking_motion(const ParkingSkillMotion& m) {
   else
     words += " straight";
   // Acceleration against the direction of motion slows the car down.
-  if (motion_brakes(m)) words += ", braking";
+  if (motion_brakes(m) && !turns_around) words += ", braking";
   return words;
 }
 

@@ -29,10 +29,14 @@ std::vector<ParkingSkillMotion> parking_skill_motions(const std::vector<StepSequ
 // reverse": mean speed <= -0.5 m/s, or nearly stopped with mean u0 < 0) / brakes (mean u0 against the
 // motion, |mean u0| >= 0.15, while moving).
 bool motion_reverses(const ParkingSkillMotion& motion);
+// Stops and changes direction: moving each way on at least a quarter of its steps, the pedal against its mean
+// motion ("stopping from driving forward, then reversing"; it reverses and it brakes).
+bool motion_turns_around(const ParkingSkillMotion& motion);
 bool motion_brakes(const ParkingSkillMotion& motion);
 
 // "reversing while steering left, braking", "driving forward straight", "reversing while steering hard left and
-// right" (near-zero mean steering, beyond half lock on most steps), "unused skill" ...
+// right" (near-zero mean steering, beyond half lock on most steps), "stopping from driving forward, then
+// reversing while steering right" (motion_turns_around), "unused skill" ...
 std::string describe_parking_motion(const ParkingSkillMotion& motion);
 // The words of every skill, distinct among used skills, so a learner never sees two different skills under
 // one name. Skills that share words get what sets them apart, in words a learner can act on: their speed

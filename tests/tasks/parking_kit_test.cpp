@@ -198,6 +198,16 @@ TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {
   EXPECT_EQ(describe_parking_motion(both_ways), "reversing while steering hard left and right");
   both_ways.sharp_fraction = 0.2;
   EXPECT_EQ(describe_parking_motion(both_ways), "reversing straight");
+  // Half of it forward, half reversing, the pedal against the mean motion: it stops and turns around.
+  ParkingSkillMotion turn_around{10, 1.9, -0.9, 0.4, 0.47};
+  EXPECT_EQ(describe_parking_motion(turn_around), "stopping from driving forward, then reversing while steering right");
+  EXPECT_TRUE(motion_reverses(turn_around));
+  EXPECT_TRUE(motion_brakes(turn_around));
+  ParkingSkillMotion back_then_forward{10, -4.0, 0.97, -0.5, 0.54};
+  EXPECT_EQ(describe_parking_motion(back_then_forward),
+            "stopping from reversing, then driving forward while steering left");
+  back_then_forward.reverse_fraction = 1.0;  // braking hard but never leaving reverse
+  EXPECT_EQ(describe_parking_motion(back_then_forward), "reversing while steering left, braking");
   EXPECT_EQ(describe_parking_motion(ParkingSkillMotion{}), "unused skill");
   for (int m = 0; m < 3; ++m) EXPECT_NE(kit().describe_skill(m), "unused skill");
   EXPECT_EQ(kit().describe_skill(7), "unknown skill");
