@@ -61,10 +61,15 @@ struct EvaluateArgs {
 
 // Parking: the same held-out scenarios' expert drives driven by realistic drivers
 // (teaching/learners/parking/drive_skill_agreement.hpp), one row per condition.
-Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint64_t seed) {
+std::vector<ParkingTrial> held_out_drives(int count, std::uint64_t seed) {
   std::vector<ParkingTrial> drives;
   for (ParkingTrial& t : generate_parking_pool({count, seed}))
     if (t.success.value_or(false)) drives.push_back(std::move(t));
+  return drives;
+}
+
+Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint64_t seed) {
+  const std::vector<ParkingTrial> drives = held_out_drives(count, seed);
   Json rows = Json::array();
   for (const AgreementRow& r : measure_drive_agreement(extractor, drives, standard_drive_conditions(), seed)) {
     rows.push_back({{"condition", r.condition},
@@ -79,6 +84,14 @@ Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint
                  r.successes, r.drives);
   }
   return rows;
+}
+
+// The same drives with keyboard keys for actions on the clean motion (keyed_action_agreement).
+double keyed_action_row(const SkillExtractor& extractor, int count, std::uint64_t seed) {
+  const StepAgreement a = keyed_action_agreement(extractor, held_out_drives(count, seed));
+  std::fprintf(stderr, "  %-48s agreement %5.1f %%  (%d steps)\n", "keyboard keys on the clean motion",
+               100.0 * a.share(), a.steps);
+  return a.share();
 }
 
 // One entry per demonstration: what it is, its true boundaries (writing) and the predicted segments, so a
@@ -207,8 +220,10 @@ int run(const EvaluateArgs& args) {
     if (model) {
       const CompileExtractor extractor = CompileExtractor::load(args.model, std::string(to_string(args.task)));
       report["realistic_drivers"] = realistic_driver_rows(extractor, args.count, seed);
+      report["keyed_actions_on_clean_motion"] = keyed_action_row(extractor, args.count, seed);
     } else {
       report["realistic_drivers"] = realistic_driver_rows(heuristic, args.count, seed);
+      report["keyed_actions_on_clean_motion"] = keyed_action_row(heuristic, args.count, seed);
     }
   }
   std::printf("%s\n", report.dump(1).c_str());

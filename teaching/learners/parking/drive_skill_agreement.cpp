@@ -94,4 +94,26 @@ std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extracto
   return rows;
 }
 
+StepAgreement keyed_action_agreement(const SkillExtractor& extractor, const std::vector<ParkingTrial>& expert_drives) {
+  std::vector<StepSequence> clean, keyed;
+  for (const ParkingTrial& t : expert_drives) {
+    clean.push_back(parking_step_sequence(t));
+    keyed.push_back(clean.back());
+    std::vector<float>& a = keyed.back().actions;
+    for (std::size_t k = 0; k + 1 < a.size(); k += 2) {
+      const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
+      a[k] = static_cast<float>(keys[0]);
+      a[k + 1] = static_cast<float>(keys[1]);
+    }
+  }
+  const std::vector<Segmentation> a = extractor.extract_all(clean), b = extractor.extract_all(keyed);
+  StepAgreement out;
+  for (std::size_t i = 0; i < clean.size(); ++i) {
+    const StepAgreement d = step_agreement(a[i], clean[i].length(), b[i], keyed[i].length(), 0);
+    out.steps += d.steps;
+    out.agreed += d.agreed;
+  }
+  return out;
+}
+
 }  // namespace sc

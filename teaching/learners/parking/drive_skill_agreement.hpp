@@ -56,4 +56,10 @@ std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extracto
                                                   const std::vector<ParkingTrial>& expert_drives,
                                                   const std::vector<DriveCondition>& conditions, std::uint64_t seed);
 
+// Why the keyboard rows disagree: the clean drives segmented again with every action replaced by the keys a
+// keyboard would give for it (keyboard_keys) and the states kept, so the car moves exactly as the expert's
+// did and only the action values the model reads change. Agreement with the clean drives' skills, step by
+// step (no shift), over all drives. A model that followed the motion alone would agree on every step.
+StepAgreement keyed_action_agreement(const SkillExtractor& extractor, const std::vector<ParkingTrial>& expert_drives);
+
 }  // namespace sc

@@ -41,7 +41,7 @@ double key_axis(double v) {
 
 // Intent (u0, u1) plus wander through the device. Wander x is steering, y is throttle (up = forward).
 ParkingAction through_device(DriveDevice device, const ParkingAction& intent, input::Vec2 wander) {
-  if (device == DriveDevice::Keyboard) return {key_axis(intent[0] + wander.y), key_axis(intent[1] + wander.x)};
+  if (device == DriveDevice::Keyboard) return keyboard_keys({intent[0] + wander.y, intent[1] + wander.x});
   const input::Vec2 aim = input::square_to_disc({std::clamp(intent[1], -1.0, 1.0), std::clamp(intent[0], -1.0, 1.0)});
   const input::Vec2 stick{aim.x + wander.x, aim.y + wander.y};
   if (device == DriveDevice::Gamepad) {
@@ -118,6 +118,8 @@ std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
   }
   return out;
 }
+
+ParkingAction keyboard_keys(const ParkingAction& intent) { return {key_axis(intent[0]), key_axis(intent[1])}; }
 
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& p, Rng& rng) {
   check(expert, p);

@@ -60,6 +60,10 @@ RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng);
 // Throws InputError if the expert trial is not at the control rate or the profile is out of range.
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& profile, Rng& rng);
 
+// The keys a keyboard driver holds for `intent`, per axis: a key when the intent reaches half the key action,
+// giving {-0.7, 0, +0.7} (KeyboardDrive::kKeyAction).
+ParkingAction keyboard_keys(const ParkingAction& intent);
+
 // The expert's control steps that brake: acceleration against the motion, |u0| >= 0.15 while moving
 // (|speed| >= 0.5 m/s) - the runs LateBraking delays. Uses the trial's states (re-simulated if missing).
 std::vector<bool> expert_braking_steps(const ParkingTrial& expert);

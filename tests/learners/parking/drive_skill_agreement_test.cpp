@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
+
 namespace sc {
 namespace {
 
@@ -45,6 +48,40 @@ TEST(DriveSkillAgreement, StandardConditionsCoverEveryDeviceAndBothRates) {
   }
   EXPECT_TRUE(device[0] && device[1] && device[2]);
   EXPECT_TRUE(five_hz && fifteen_hz);
+}
+
+// Labels each step by the sign of its steering action (left, straight, right): a model that reads actions.
+class SteeringSignExtractor final : public SkillExtractor {
+ public:
+  Segmentation extract(const StepSequence& x) const override {
+    Segmentation out;
+    for (int t = 0; t < x.length(); ++t) {
+      const float u1 = x.actions[static_cast<std::size_t>(t * x.action_dim + 1)];
+      const int skill = u1 < -0.1f ? 0 : u1 > 0.1f ? 2 : 1;
+      if (!out.segments.empty() && out.segments.back().skill == skill)
+        out.segments.back().end = t + 1;
+      else
+        out.segments.push_back({skill, t, t + 1});
+    }
+    return out;
+  }
+  int num_skills() const override { return 3; }
+  std::string name() const override { return "steering-sign"; }
+};
+
+TEST(DriveSkillAgreement, KeyedActionsOnTheCleanMotionChangeOnlyWhatAModelReadsFromActions) {
+  ParkingTrial drive;
+  drive.scenario = parking_pool_scenario(0, 0);
+  for (int i = 0; i < 8; ++i) drive.actions.push_back({0.8, -0.3});  // a key is held from 0.35: no steering key
+  for (int i = 0; i < 12; ++i) drive.actions.push_back({-0.6, 0.9});
+  // The time heuristic never reads actions: every step agrees.
+  const StepAgreement time = keyed_action_agreement(TimeHeuristicExtractor(3), {drive});
+  EXPECT_EQ(time.steps, 20);
+  EXPECT_EQ(time.agreed, 20);
+  // The gentle left turn becomes "straight" on the keyboard: 8 of 20 steps change skill.
+  const StepAgreement sign = keyed_action_agreement(SteeringSignExtractor(), {drive});
+  EXPECT_EQ(sign.steps, 20);
+  EXPECT_EQ(sign.agreed, 12);
 }
 
 }  // namespace

@@ -143,5 +143,11 @@ TEST(RealisticDriver, NoviceProfilesStayInTheirDocumentedRanges) {
   }
 }
 
+TEST(RealisticDriver, KeyboardKeysAreHeldFromHalfTheKeyAction) {
+  EXPECT_EQ(keyboard_keys({0.8, -0.3}), (ParkingAction{0.7, 0.0}));
+  EXPECT_EQ(keyboard_keys({-0.35, 0.36}), (ParkingAction{-0.7, 0.7}));
+  EXPECT_EQ(keyboard_keys({0.34, -0.34}), (ParkingAction{0.0, 0.0}));
+}
+
 }  // namespace
 }  // namespace sc
