@@ -35,6 +35,7 @@ struct TrainArgs {
   int augment = 0;                           // realistic copies per demonstration (0 = the expert's only)
   std::string augment_drawers = "training";  // writing: "training" (paper's + drawers 1-10) or "paper"
   bool augment_mouse = false;                // writing: copies are also mouse-sampled
+  bool augment_keyed = false;                // parking: one more copy per plan, keyboard keys on clean states
 };
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
@@ -77,7 +78,8 @@ std::string git_revision() {
 }
 
 SkillDataSet generate_augmented_demos(const TrainArgs& args) {
-  if (args.task == TaskKind::parking) return generate_augmented_parking_demos(args.demos, args.augment, args.seed);
+  if (args.task == TaskKind::parking)
+    return generate_augmented_parking_demos(args.demos, args.augment, args.seed, args.augment_keyed);
   const AugmentDrawers drawers =
       args.augment_drawers == "paper" ? AugmentDrawers::PaperOnly : AugmentDrawers::PaperAndTraining;
   return generate_augmented_writing_demos(args.demos, args.augment, args.seed, {drawers, args.augment_mouse});
@@ -92,6 +94,8 @@ int run(const TrainArgs& args) {
                args.data.empty() ? "generating" : "reading");
   if (args.augment_mouse && (args.task != TaskKind::writing || args.augment == 0))
     throw InputError("--augment-mouse", "only for writing with --augment");
+  if (args.augment_keyed && (args.task != TaskKind::parking || args.augment == 0))
+    throw InputError("--augment-keyed", "only for parking with --augment");
   if (args.augment > 0 && !args.data.empty())
     throw InputError("--augment", "only for generated demonstrations (without --data)");
   const SkillDataSet data = args.augment > 0    ? generate_augmented_demos(args)
@@ -166,6 +170,9 @@ CommandRunner setup_train_skills(CLI::App& sub) {
   sub.add_flag("--augment-mouse", args->augment_mouse,
                "Writing with --augment: the copies are also read as a mouse reports them (speed, screen grid, "
                "hesitations); their inherited boundaries move with the readings");
+  sub.add_flag("--augment-keyed", args->augment_keyed,
+               "Parking with --augment: each plan also gets a copy with keyboard keys for its actions on the clean "
+               "states (docs/skills.md \"Why the keyboard rows disagree\")");
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

@@ -11,12 +11,15 @@
 // Rng(seed).fork(kAugmentStream).fork(i).fork(c + 1), so the data are reproducible and independent of the
 // evaluation's drivers (other seeds, other streams). Copies that collide are kept: learners collide too.
 // No boundaries are known or inherited (parking training has no warm start).
+// With `keyed_copy`, each plan also gets one copy with every action replaced by the keys a keyboard gives for
+// it (keyboard_keys) on the clean plan's states: the same motion read through keyboard values, so the model
+// learns that key values alone do not make another skill (docs/skills.md, "Why the keyboard rows disagree").
 #include <cstdint>
 
 #include "teaching/tasks/skill_training_data.hpp"
 
 namespace sc {
 
-SkillDataSet generate_augmented_parking_demos(int count, int copies, std::uint64_t seed);
+SkillDataSet generate_augmented_parking_demos(int count, int copies, std::uint64_t seed, bool keyed_copy = false);
 
 }  // namespace sc

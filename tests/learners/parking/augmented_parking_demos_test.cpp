@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "teaching/learners/parking/realistic_driver.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
 
 namespace sc {
@@ -51,6 +52,26 @@ TEST(AugmentedParkingDemos, NoCopiesIsTheCleanDataAndBadCountsAreRefused) {
   EXPECT_EQ(generate_augmented_parking_demos(1, 0, 1).demos.size(), generate_parking_demos(1, 1).demos.size());
   EXPECT_THROW(generate_augmented_parking_demos(0, 1, 1), InputError);
   EXPECT_THROW(generate_augmented_parking_demos(1, -1, 1), InputError);
+}
+
+TEST(AugmentedParkingDemos, AKeyedCopyIsTheCleanMotionWithKeyboardKeysForActions) {
+  const SkillDataSet plain = generate_augmented_parking_demos(2, 1, 4);
+  const SkillDataSet data = generate_augmented_parking_demos(2, 1, 4, true);
+  ASSERT_EQ(data.demos.size(), plain.demos.size() / 2 * 3);
+  for (std::size_t i = 0; i < data.demos.size(); i += 3) {
+    const SkillDemo& plan = data.demos[i];
+    EXPECT_EQ(data.demos[i + 1].steps.actions, plain.demos[i / 3 * 2 + 1].steps.actions);  // the copies as before
+    const SkillDemo& keyed = data.demos[i + 2];
+    EXPECT_EQ(keyed.label, plan.label + " (keyboard keys)");
+    EXPECT_EQ(keyed.steps.states, plan.steps.states);  // the same motion
+    ASSERT_EQ(keyed.steps.actions.size(), plan.steps.actions.size());
+    for (std::size_t k = 0; k + 1 < keyed.steps.actions.size(); k += 2) {
+      const ParkingAction keys = keyboard_keys({plan.steps.actions[k], plan.steps.actions[k + 1]});
+      EXPECT_FLOAT_EQ(keyed.steps.actions[k], static_cast<float>(keys[0]));
+      EXPECT_FLOAT_EQ(keyed.steps.actions[k + 1], static_cast<float>(keys[1]));
+    }
+    EXPECT_NE(keyed.steps.actions, plan.steps.actions);
+  }
 }
 
 }  // namespace
