@@ -24,17 +24,6 @@ SkillDemo realistic_copy(const ParkingTrial& expert, const std::string& label, c
       label + " (" + device_name(device) + " copy " + std::to_string(copy + 1) + ")", parking_step_sequence(drive), {}};
 }
 
-SkillDemo keyed_copy_of(const SkillDemo& clean) {
-  SkillDemo out{clean.label + " (keyboard keys)", clean.steps, {}};
-  std::vector<float>& a = out.steps.actions;
-  for (std::size_t k = 0; k + 1 < a.size(); k += 2) {
-    const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
-    a[k] = static_cast<float>(keys[0]);
-    a[k + 1] = static_cast<float>(keys[1]);
-  }
-  return out;
-}
-
 }  // namespace
 
 SkillDataSet generate_augmented_parking_demos(int count, int copies, std::uint64_t seed, bool keyed_copy) {
@@ -52,9 +41,9 @@ SkillDataSet generate_augmented_parking_demos(int count, int copies, std::uint64
     const std::string label = "scenario " + std::to_string(i);
     out.demos.push_back({label, parking_step_sequence(trial), {}});
     const Rng plan_rng = root.fork(static_cast<std::uint64_t>(i));
-    const SkillDemo clean = out.demos.back();
+    const std::size_t clean = out.demos.size() - 1;
     for (int c = 0; c < copies; ++c) out.demos.push_back(realistic_copy(trial, label, plan_rng, c));
-    if (keyed_copy) out.demos.push_back(keyed_copy_of(clean));
+    if (keyed_copy) out.demos.push_back({label + " (keyboard keys)", with_keyboard_keys(out.demos[clean].steps), {}});
   }
   out.description = std::to_string(parked) + " parked ParkingExpert plans out of " + std::to_string(count) +
                     " random classic scenarios (parking_pool_scenario(seed " + std::to_string(seed) + ", 0.." +

@@ -98,13 +98,7 @@ StepAgreement keyed_action_agreement(const SkillExtractor& extractor, const std:
   std::vector<StepSequence> clean, keyed;
   for (const ParkingTrial& t : expert_drives) {
     clean.push_back(parking_step_sequence(t));
-    keyed.push_back(clean.back());
-    std::vector<float>& a = keyed.back().actions;
-    for (std::size_t k = 0; k + 1 < a.size(); k += 2) {
-      const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
-      a[k] = static_cast<float>(keys[0]);
-      a[k + 1] = static_cast<float>(keys[1]);
-    }
+    keyed.push_back(with_keyboard_keys(clean.back()));
   }
   const std::vector<Segmentation> a = extractor.extract_all(clean), b = extractor.extract_all(keyed);
   StepAgreement out;

@@ -121,6 +121,17 @@ std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
 
 ParkingAction keyboard_keys(const ParkingAction& intent) { return {key_axis(intent[0]), key_axis(intent[1])}; }
 
+StepSequence with_keyboard_keys(StepSequence steps) {
+  if (steps.action_dim < 2) return steps;
+  std::vector<float>& a = steps.actions;
+  for (std::size_t k = 0; k + 1 < a.size(); k += static_cast<std::size_t>(steps.action_dim)) {
+    const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
+    a[k] = static_cast<float>(keys[0]);
+    a[k + 1] = static_cast<float>(keys[1]);
+  }
+  return steps;
+}
+
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& p, Rng& rng) {
   check(expert, p);
   const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;

@@ -24,6 +24,7 @@
 
 #include "engine/core/rng.hpp"
 #include "engine/parking/parking_trial.hpp"
+#include "teaching/skills/skill_extractor.hpp"
 
 namespace sc {
 
@@ -63,6 +64,9 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
 // The keys a keyboard driver holds for `intent`, per axis: a key when the intent reaches half the key action,
 // giving {-0.7, 0, +0.7} (KeyboardDrive::kKeyAction).
 ParkingAction keyboard_keys(const ParkingAction& intent);
+// The same control steps with keyboard_keys for every (u0, u1) action and the states kept: the expert's
+// motion read through keyboard values (keyed copies in training, keyed_action_agreement).
+StepSequence with_keyboard_keys(StepSequence steps);
 
 // The expert's control steps that brake: acceleration against the motion, |u0| >= 0.15 while moving
 // (|speed| >= 0.5 m/s) - the runs LateBraking delays. Uses the trial's states (re-simulated if missing).
