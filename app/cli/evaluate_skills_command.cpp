@@ -68,8 +68,8 @@ std::vector<ParkingTrial> held_out_drives(int count, std::uint64_t seed) {
   return drives;
 }
 
-Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint64_t seed) {
-  const std::vector<ParkingTrial> drives = held_out_drives(count, seed);
+Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<ParkingTrial>& drives,
+                           std::uint64_t seed) {
   Json rows = Json::array();
   for (const AgreementRow& r : measure_drive_agreement(extractor, drives, standard_drive_conditions(), seed)) {
     rows.push_back({{"condition", r.condition},
@@ -87,8 +87,8 @@ Json realistic_driver_rows(const SkillExtractor& extractor, int count, std::uint
 }
 
 // The same drives with keyboard keys for actions on the clean motion (keyed_action_agreement).
-double keyed_action_row(const SkillExtractor& extractor, int count, std::uint64_t seed) {
-  const StepAgreement a = keyed_action_agreement(extractor, held_out_drives(count, seed));
+double keyed_action_row(const SkillExtractor& extractor, const std::vector<ParkingTrial>& drives) {
+  const StepAgreement a = keyed_action_agreement(extractor, drives);
   std::fprintf(stderr, "  %-48s agreement %5.1f %%  (%d steps)\n", "keyboard keys on the clean motion",
                100.0 * a.share(), a.steps);
   return a.share();
@@ -217,14 +217,12 @@ int run(const EvaluateArgs& args) {
   if (args.realistic_drivers) {
     if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
-    if (model) {
-      const CompileExtractor extractor = CompileExtractor::load(args.model, std::string(to_string(args.task)));
-      report["realistic_drivers"] = realistic_driver_rows(extractor, args.count, seed);
-      report["keyed_actions_on_clean_motion"] = keyed_action_row(extractor, args.count, seed);
-    } else {
-      report["realistic_drivers"] = realistic_driver_rows(heuristic, args.count, seed);
-      report["keyed_actions_on_clean_motion"] = keyed_action_row(heuristic, args.count, seed);
-    }
+    const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
+    std::optional<CompileExtractor> compile;
+    if (model) compile.emplace(CompileExtractor::load(args.model, std::string(to_string(args.task))));
+    const SkillExtractor& extractor = compile ? static_cast<const SkillExtractor&>(*compile) : heuristic;
+    report["realistic_drivers"] = realistic_driver_rows(extractor, drives, seed);
+    report["keyed_actions_on_clean_motion"] = keyed_action_row(extractor, drives);
   }
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
