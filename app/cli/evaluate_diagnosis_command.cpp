@@ -16,11 +16,9 @@
 
 #include "app/cli/command_registry.hpp"
 #include "app/cli/task_option.hpp"
-#include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
-#include "teaching/skills/compile_extractor.hpp"
 #include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
@@ -38,17 +36,6 @@ struct EvaluateDiagnosisArgs {
   bool noise_floor = false;
   std::optional<double> apply_noise_floor;
 };
-
-// The shipped kit, or (--apply-noise-floor) the same model and pool with a noise floor.
-std::unique_ptr<TaskKit> make_kit(const EvaluateDiagnosisArgs& args) {
-  if (!args.apply_noise_floor) return make_task_kit(TaskKind::parking, args.model);
-  const std::filesystem::path model =
-      args.model.empty() ? asset_dir() / "models" / "parking.pt" : std::filesystem::path(args.model);
-  ParkingKitOptions options{default_parking_pool_file(), ParkingPoolOptions{100, 0, GoalRegion::WholeLot},
-                            args.apply_noise_floor};
-  return std::make_unique<ParkingKit>(std::make_shared<CompileExtractor>(CompileExtractor::load(model, "parking")), "",
-                                      options);
-}
 
 // Each deficit's learners' segment scores against the noise-only learners' floor.
 void print_noise_floor(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
@@ -100,7 +87,7 @@ std::string skill_list(const std::vector<int>& skills) {
 
 int run(const EvaluateDiagnosisArgs& args) {
   if (args.task != TaskKind::parking) throw InputError("evaluate-diagnosis", "only --task parking is measured here");
-  const std::unique_ptr<TaskKit> base = make_kit(args);
+  const std::unique_ptr<TaskKit> base = make_parking_kit(args.model, GoalRegion::WholeLot, args.apply_noise_floor);
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());

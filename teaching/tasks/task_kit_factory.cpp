@@ -34,12 +34,17 @@ ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::pat
 
 }  // namespace
 
+std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
+                                          std::optional<double> execution_noise_floor) {
+  ChosenExtractor chosen = choose_skill_extractor(TaskKind::parking, model);
+  return std::make_unique<ParkingKit>(
+      chosen.extractor, chosen.notice,
+      ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}, execution_noise_floor});
+}
+
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {
+  if (task == TaskKind::parking) return make_parking_kit(model, region, std::nullopt);
   ChosenExtractor chosen = choose_skill_extractor(task, model);
-  if (task == TaskKind::parking)
-    return std::make_unique<ParkingKit>(
-        chosen.extractor, chosen.notice,
-        ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}, std::nullopt});
   return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
 }
 

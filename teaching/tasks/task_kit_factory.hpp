@@ -4,6 +4,7 @@
 // saying why, so a checkout without trained models still trains and diagnoses.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "engine/core/task_kind.hpp"
@@ -18,6 +19,10 @@ namespace sc {
 // regions and ignores it.
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model = {},
                                        GoalRegion region = GoalRegion::WholeLot);
+// The parking kit make_task_kit builds, with quality-aware expertise's noise floor set (research:
+// `evaluate-diagnosis --apply-noise-floor`; the shipped kit uses none, ParkingKitOptions).
+std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
+                                          std::optional<double> execution_noise_floor);
 // The same for a task named in text (a stored session's task column): InputError for anything else.
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model = {},
                                        GoalRegion region = GoalRegion::WholeLot);
