@@ -9,10 +9,9 @@
 
 namespace sc {
 
-Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed, ExpertiseMode mode) {
-  Diagnosis out;
-  out.mode = mode;
-  std::vector<ExecutionTrial> evidence;
+std::vector<DiagnosedTrial> diagnose_each_trial(const TaskKit& kit, const std::vector<Json>& trials,
+                                                ExpertiseMode mode) {
+  std::vector<DiagnosedTrial> out;
   const std::vector<ExpertDemo>& pool = kit.expert_pool();
   for (std::size_t i = 0; i < trials.size(); ++i) {
     const std::string where = "trial " + std::to_string(i);
@@ -32,17 +31,29 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
     const StepSequence learner_steps = kit.steps_of(trial);
     d.student = kit.extractor().extract(learner_steps);
     d.reward = kit.reward_of(trial);
-    evidence.push_back(
-        execution_trial(kit, {static_cast<int>(i), d.expert, d.student, d.reward}, expert_steps, learner_steps, mode));
-    d.execution = evidence.back().segments;
-    out.trials.push_back(std::move(d));
+    d.execution =
+        execution_trial(kit, {static_cast<int>(i), d.expert, d.student, d.reward}, expert_steps, learner_steps, mode)
+            .segments;
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed, ExpertiseMode mode) {
+  Diagnosis out;
+  out.mode = mode;
+  out.trials = diagnose_each_trial(kit, trials, mode);
+  std::vector<ExecutionTrial> evidence;
+  for (std::size_t i = 0; i < out.trials.size(); ++i) {
+    const DiagnosedTrial& d = out.trials[i];
+    evidence.push_back({{static_cast<int>(i), d.expert, d.student, d.reward}, d.execution});
   }
   const CurriculumConfig config = kit.curriculum_config();
   ExecutionExpertise estimate = estimate_execution_expertise(
       evidence, kit.extractor().num_skills(), config.drills.num_targets, mode, kit.execution_noise_floor());
   out.expertise = std::move(estimate.estimate);
   out.why = std::move(estimate.why);
-  const DrillBuilder builder(demo_skills(pool), config.drills);
+  const DrillBuilder builder(demo_skills(kit.expert_pool()), config.drills);
   Rng rng(seed);
   for (const DrillPlan& plan : builder.individualized(out.expertise, rng))
     out.drills.push_back(kit.projector().project(plan));

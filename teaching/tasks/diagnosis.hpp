@@ -34,6 +34,10 @@ struct Diagnosis {
 // drills). InputError for a trial of another task or a malformed trial. Each expert segment is aligned with
 // the learner's trial (dynamic time warping on kit.trace_points) for the "where" of the explanation and, in
 // quality-aware mode, scored with kit.execution_reward.
+// The per-trial part of diagnose_trials (segmentations, reward, aligned execution), without the expertise
+// estimate and the drills: what calibrating the noise floor needs (execution_noise_floor.hpp).
+std::vector<DiagnosedTrial> diagnose_each_trial(const TaskKit& kit, const std::vector<Json>& trials,
+                                                ExpertiseMode mode);
 Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, std::uint64_t seed,
                           ExpertiseMode mode = ExpertiseMode::Alg2);
 

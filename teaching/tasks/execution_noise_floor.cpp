@@ -19,9 +19,8 @@ double NoiseFloorCalibration::percentile(double p) const {
 
 NoiseFloorCalibration calibrate_noise_floor(const TaskKit& kit, const std::vector<std::vector<Json>>& learners) {
   NoiseFloorCalibration out;
-  for (std::size_t i = 0; i < learners.size(); ++i) {
-    const Diagnosis d = diagnose_trials(kit, learners[i], i, ExpertiseMode::QualityAware);
-    for (const DiagnosedTrial& t : d.trials)
+  for (const std::vector<Json>& trials : learners) {
+    for (const DiagnosedTrial& t : diagnose_each_trial(kit, trials, ExpertiseMode::QualityAware))
       for (const SegmentExecution& s : t.execution) out.scores.push_back(s.reward);
     ++out.learners;
   }

@@ -5,10 +5,10 @@
 // noise reaches on only kNoiseFloorPercentile % of segments, so a segment scoring worse is evidence of a
 // deficit and one scoring better is not.
 //
-// Spec. Every learner's trials are diagnosed as the app diagnoses them (diagnose_trials, quality-aware);
-// the scores are the raw execution scores of all expert segments of all trials (DiagnosedTrial::execution).
-// Percentiles interpolate linearly between order statistics. The shipped kits' floors are calibrated on the
-// planted tables' noise-only learners at seed 0, which no table is reported at (docs/skills.md).
+// Spec. Every learner's trials are segmented and aligned as the app diagnoses them (diagnose_each_trial,
+// quality-aware); the scores are the raw execution scores of all expert segments of all trials
+// (DiagnosedTrial::execution). Percentiles interpolate linearly between order statistics. The shipped kits' floors are
+// calibrated on the planted tables' noise-only learners at seed 0, which no table is reported at (docs/skills.md).
 #include <optional>
 #include <string>
 #include <vector>
