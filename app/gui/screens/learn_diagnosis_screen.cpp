@@ -16,6 +16,7 @@
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/curricula/teachable_skills.hpp"
+#include "teaching/tasks/expert_demos.hpp"
 
 namespace sc {
 namespace {
@@ -93,8 +94,7 @@ class LearnDiagnosisScreen final : public Screen {
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
     // A weak skill too brief to practise on its own (teachable_skills.hpp) says so: otherwise a learner
     // wonders why a long bar gets no drill.
-    std::vector<Segmentation> pool;
-    for (const ExpertDemo& demo : kit.expert_pool()) pool.push_back(demo.skills);
+    const std::vector<Segmentation> pool = demo_skills(kit.expert_pool());
     const int min_steps = s.curriculum_config().min_skill_steps;
     const ImVec2 pic(110 * sc, 56 * sc);
     // The list scrolls when the window is too short for every row, so the button below always shows.
