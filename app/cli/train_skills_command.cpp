@@ -35,6 +35,7 @@ struct TrainArgs {
   int augment = 0;                           // realistic copies per demonstration (0 = the expert's only)
   std::string augment_drawers = "training";  // writing: "training" (paper's + drawers 1-10) or "paper"
   bool augment_mouse = false;                // writing: copies are also mouse-sampled
+  int augment_other_hands = 0;               // writing: copies by drawers 1-10, boundaries carried by alignment
   bool augment_keyed = false;                // parking: one more copy per plan, keyboard keys on clean states
 };
 
@@ -82,7 +83,8 @@ SkillDataSet generate_augmented_demos(const TrainArgs& args) {
     return generate_augmented_parking_demos(args.demos, args.augment, args.seed, args.augment_keyed);
   const AugmentDrawers drawers =
       args.augment_drawers == "paper" ? AugmentDrawers::PaperOnly : AugmentDrawers::PaperAndTraining;
-  return generate_augmented_writing_demos(args.demos, args.augment, args.seed, {drawers, args.augment_mouse});
+  return generate_augmented_writing_demos(args.demos, args.augment, args.seed,
+                                          {drawers, args.augment_mouse, args.augment_other_hands});
 }
 
 int run(const TrainArgs& args) {
@@ -94,6 +96,8 @@ int run(const TrainArgs& args) {
                args.data.empty() ? "generating" : "reading");
   if (args.augment_mouse && (args.task != TaskKind::writing || args.augment == 0))
     throw InputError("--augment-mouse", "only for writing with --augment");
+  if (args.augment_other_hands > 0 && (args.task != TaskKind::writing || args.augment == 0))
+    throw InputError("--augment-other-hands", "only for writing with --augment");
   if (args.augment_keyed && (args.task != TaskKind::parking || args.augment == 0))
     throw InputError("--augment-keyed", "only for parking with --augment");
   if (args.augment > 0 && !args.data.empty())
@@ -170,6 +174,11 @@ CommandRunner setup_train_skills(CLI::App& sub) {
   sub.add_flag("--augment-mouse", args->augment_mouse,
                "Writing with --augment: the copies are also read as a mouse reports them (speed, screen grid, "
                "hesitations); their inherited boundaries move with the readings");
+  sub.add_option("--augment-other-hands", args->augment_other_hands,
+                 "Writing with --augment: this many more copies of each word with letters by drawers 1-10, the clean "
+                 "word's repetition boundaries carried to them by aligning the two traces (docs/skills.md \"Copies by "
+                 "other hands\")")
+      ->check(CLI::Range(0, 20));
   sub.add_flag("--augment-keyed", args->augment_keyed,
                "Parking with --augment: each plan also gets a copy with keyboard keys for its actions on the clean "
                "states (docs/skills.md \"Why the keyboard rows disagree\")");

@@ -17,6 +17,7 @@
 #include "teaching/skills/repeat_boundaries.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/writing_other_hand.hpp"
 #include "teaching/tasks/writing_realistic_learner.hpp"
 #include "teaching/tasks/writing_steps.hpp"
 
@@ -110,13 +111,42 @@ std::vector<int> units_after_drops(const std::vector<int>& units, const std::vec
   return out;
 }
 
+// A perturbed copy and the warm start's boundaries and units it inherits.
+struct WarmCopy {
+  WrittenWord word;
+  std::vector<int> boundaries;
+  std::vector<int> units;
+};
+
+void add_copy(SkillDataSet& out, const std::string& label, const WarmCopy& copy, bool mouse, Rng& rng) {
+  const std::string& word = copy.word.word;
+  if (!mouse) {
+    out.demos.push_back(
+        {label, writing_step_sequence(writing::trace_step_data(copy.word.points, writing::AlphabetKind::Classic, word)),
+         copy.word.interior_boundaries()});
+    out.warm_boundaries.push_back(copy.boundaries);
+    out.warm_units.push_back(copy.units);
+    return;
+  }
+  StepSequence steps;
+  std::vector<std::vector<bool>> kept;
+  auto moved = mouse_copy(copy.word, {copy.word.interior_boundaries(), copy.boundaries}, rng, steps, kept);
+  out.demos.push_back({label, std::move(steps), std::move(moved[0])});
+  out.warm_boundaries.push_back(std::move(moved[1]));
+  out.warm_units.push_back(units_after_drops(copy.units, kept[1]));
+}
+
 std::string augmented_description(int count, int copies, std::uint64_t seed, const WritingAugmentation& a) {
   return std::to_string(count) + " classic words of the reference's generator (seed " + std::to_string(seed) +
          "), letters by " +
          (a.drawers == AugmentDrawers::PaperAndTraining ? "the paper's and Omniglot drawers 1-10"
                                                         : "the paper's drawer") +
          ", plus " + std::to_string(copies) + " perturbed copies each (wobble <= 12 px, affine <= 0.12" +
-         (a.mouse ? ", mouse-sampled" : "") + ") with the clean words' repetition boundaries";
+         (a.mouse ? ", mouse-sampled" : "") + ")" +
+         (a.other_hands > 0 ? " and " + std::to_string(a.other_hands) +
+                                  " copies by drawers 1-10 aligned to them (writing_other_hand.hpp),"
+                            : "") +
+         " with the clean words' repetition boundaries";
 }
 
 }  // namespace
@@ -148,31 +178,31 @@ SkillDataSet generate_augmented_writing_demos(int count, int copies, std::uint64
   const std::vector<std::vector<int>> units =
       repeat_units(clean_steps, warm, CompileConfig::writing_defaults().latent_size, repeat.token_precision);
   SkillDataSet out{"writing", augmented_description(count, copies, seed, augmentation), {}, {}, {}};
+  const std::vector<int> other_drawers = training_drawers();
   for (int i = 0; i < count; ++i) {
     const std::size_t u = static_cast<std::size_t>(i);
     out.demos.push_back({words[u], clean_steps[u], clean[u].interior_boundaries()});
     out.warm_boundaries.push_back(warm[u]);
     out.warm_units.push_back(units[u]);
-    for (int c = 0; c < copies; ++c) {
+    for (int c = 0; c < copies + augmentation.other_hands; ++c) {
       Rng rng = root.fork(static_cast<std::uint64_t>(i)).fork(1u + static_cast<std::uint64_t>(c));
-      const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
-      const WrittenWord copy = perturbed(clean[u], {wobble, affine}, rng);
-      const std::string label = words[u] + " (copy " + std::to_string(c + 1) + ")";
-      if (!augmentation.mouse) {
-        out.demos.push_back(
-            {label,
-             writing_step_sequence(writing::trace_step_data(copy.points, writing::AlphabetKind::Classic, words[u])),
-             copy.interior_boundaries()});
-        out.warm_boundaries.push_back(warm[u]);
-        out.warm_units.push_back(units[u]);
-        continue;
+      const bool other_hand = c >= copies;
+      WarmCopy source{clean[u], warm[u], units[u]};
+      if (other_hand) {
+        std::vector<int> drawers;
+        for (std::size_t k = 0; k < words[u].size(); ++k)
+          drawers.push_back(other_drawers[rng.below(other_drawers.size())]);
+        source.word = written_word(glyphs, words[u], drawers);
+        const CarriedBoundaries carried = carried_boundaries(clean[u], source.word, warm[u]);
+        source.boundaries = carried.boundaries;
+        source.units = units_after_drops(units[u], carried.kept);
       }
-      StepSequence steps;
-      std::vector<std::vector<bool>> kept;
-      auto moved = mouse_copy(copy, {copy.interior_boundaries(), warm[u]}, rng, steps, kept);
-      out.demos.push_back({label, std::move(steps), std::move(moved[0])});
-      out.warm_boundaries.push_back(std::move(moved[1]));
-      out.warm_units.push_back(units_after_drops(units[u], kept[1]));
+      const double wobble = rng.uniform(0.0, 12.0), affine = rng.uniform(0.0, 0.12);
+      source.word = perturbed(source.word, {wobble, affine}, rng);
+      const std::string label =
+          words[u] +
+          (other_hand ? " (other hand " + std::to_string(c - copies + 1) : " (copy " + std::to_string(c + 1)) + ")";
+      add_copy(out, label, source, augmentation.mouse, rng);
     }
   }
   return out;

@@ -46,6 +46,10 @@ struct WritingAugmentation {
   // the commonest way a learner's trace differs from the gold. The readings change the step count, so each
   // inherited boundary moves to the reading the sampling maps its pen step to (as symbol starts move).
   bool mouse = false;
+  // Per word, this many more copies whose letters are by drawers of training_drawers() (one drawn per letter),
+  // with the clean word's repetition boundaries and units carried over by alignment (writing_other_hand.hpp),
+  // then perturbed (and mouse-sampled) like the other copies.
+  int other_hands = 0;
 };
 // Augmented writing data: `count` classic words of Rng(seed), each letter by a drawer drawn as `augmentation`
 // says (the unseen drawers, unseen_drawers(), are never used), then `copies` perturbed

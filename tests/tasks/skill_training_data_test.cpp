@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <set>
 
 #include "engine/core/error.hpp"
@@ -67,6 +68,40 @@ TEST(SkillTrainingData, MouseSampledCopiesMoveTheirInheritedBoundariesWithTheRea
   }
   EXPECT_LT(same_length, 6);  // the readings are not the pen steps
   EXPECT_NE(data.description.find("mouse-sampled"), std::string::npos) << data.description;
+}
+
+TEST(SkillTrainingData, OtherHandCopiesCarryTheCleanWordsWarmBoundariesAndUnitsToOtherLetters) {
+  const SkillDataSet data = generate_augmented_writing_demos(8, 0, 2, {AugmentDrawers::PaperOnly, false, 1});
+  ASSERT_EQ(data.demos.size(), 16u);
+  ASSERT_EQ(data.warm_units.size(), 16u);
+  int other_length = 0, near = 0, carried = 0;
+  for (std::size_t i = 0; i < 16; i += 2) {
+    const SkillDemo& clean = data.demos[i];
+    const SkillDemo& copy = data.demos[i + 1];
+    EXPECT_NE(copy.label.find("other hand"), std::string::npos) << copy.label;
+    other_length += copy.steps.length() != clean.steps.length();  // other drawers' letters, other step counts
+    const auto& warm = data.warm_boundaries[i + 1];
+    EXPECT_TRUE(std::is_sorted(warm.begin(), warm.end()));
+    ASSERT_EQ(data.warm_units[i + 1].size(), warm.size() + 1) << clean.label;
+    if (warm.size() == data.warm_boundaries[i].size()) {
+      EXPECT_EQ(data.warm_units[i + 1], data.warm_units[i]) << clean.label;  // nothing dropped: the same units
+    }
+    // The warm start's boundaries of a clean word are its letter starts (repeats), so the carried ones should
+    // land near the copy's own letter starts - which training never reads.
+    const double tolerance = 0.05 * copy.steps.length();
+    for (int b : warm) {
+      ++carried;
+      for (int t : copy.true_boundaries) {
+        if (std::abs(b - t) <= tolerance) {
+          ++near;
+          break;
+        }
+      }
+    }
+  }
+  EXPECT_GE(other_length, 6);
+  EXPECT_GE(near, 0.8 * carried);
+  EXPECT_NE(data.description.find("drawers 1-10 aligned"), std::string::npos) << data.description;
 }
 
 TEST(SkillTrainingData, ParkingDemosAreParkedExpertPlans) {
