@@ -53,6 +53,7 @@ struct EvaluateArgs {
   bool details = false;
   bool robustness = false;
   bool planted = false;
+  bool own_hands = false;  // --planted-weaknesses: every learner writes in an unseen drawer's shapes
   bool noise_floor = false;
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
@@ -149,7 +150,7 @@ int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
                args.learners, args.learners, static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
   const PlantedWeaknessReport report =
-      measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed, args.expertise);
+      measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), args.learners, seed, args.expertise, args.own_hands);
   std::printf("%s, %d learners per letter, seed %llu, %s expertise:\n%s",
               args.time_heuristic ? "time heuristic" : args.model.c_str(), args.learners,
               static_cast<unsigned long long>(seed), expertise_mode_name(args.expertise).c_str(),
@@ -262,12 +263,17 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
                  "Learners per letter (and noise-only learners) for --planted-weaknesses, learners for --noise-floor")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  auto* expertise = sub.add_option("--expertise", args->expertise,
-                                   "With --planted-weaknesses: alg2 (the paper's Alg. 2, the app's default) or "
-                                   "quality-aware (Alg. 2 plus how well each skill was done)")
-                        ->default_str("alg2")
-                        ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
+  auto* expertise =
+      sub.add_option("--expertise", args->expertise,
+                     "With --planted-weaknesses: alg2 (the paper's Alg. 2, research mode) or "
+                     "quality-aware (Alg. 2 plus how well each skill was done; writing learners' default)")
+          ->default_str("alg2")
+          ->transform(CLI::CheckedTransformer(expertise_modes_by_name()));
   expertise->needs(planted);
+  sub.add_flag("--own-hands", args->own_hands,
+               "With --planted-weaknesses: every learner writes all its letters in the shapes of one unseen drawer "
+               "(11-15), not the paper's (docs/skills.md \"Learners in their own hand\")")
+      ->needs(planted);
   planted->excludes(sub.get_option("--robustness"));
   noise_floor->excludes(planted)->excludes(sub.get_option("--robustness"));
   return [args] { return run(*args); };

@@ -27,9 +27,10 @@ FaultShape fault_shape(const PlantedLearner& learner) {
   FaultShape f;
   f.wobble_px = rng.uniform(2.0, 6.0);
   if (learner.letter != 0) {
-    const int paper = writing::default_drawer(writing::AlphabetKind::Classic, learner.letter);
+    const int own = learner.hand_drawer != 0 ? learner.hand_drawer
+                                             : writing::default_drawer(writing::AlphabetKind::Classic, learner.letter);
     f.drawer = 1 + static_cast<int>(rng.below(writing::kDrawersPerCharacter - 1));
-    if (f.drawer >= paper) ++f.drawer;
+    if (f.drawer >= own) ++f.drawer;
   }
   f.scale_y = rng.uniform() < 0.5 ? rng.uniform(0.4, 0.6) : rng.uniform(1.6, 2.0);
   f.shear = (rng.uniform() < 0.5 ? -1.0 : 1.0) * rng.uniform(0.5, 0.8);
@@ -97,7 +98,7 @@ std::string to_string(LetterFault fault) {
 writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std::string& word,
                                     const PlantedLearner& learner, int word_index) {
   const FaultShape shape = fault_shape(learner);
-  std::vector<int> drawers(word.size(), 0);
+  std::vector<int> drawers(word.size(), learner.hand_drawer);
   for (std::size_t k = 0; k < word.size(); ++k)
     if (word[k] == learner.letter && learner.fault == LetterFault::OtherDrawer) drawers[k] = shape.drawer;
   WrittenWord w = written_word(glyphs, word, drawers);
@@ -137,16 +138,27 @@ PlantedLearner noise_only_learner(std::uint64_t seed, int index) {
   return {0, LetterFault::None, Rng(seed).fork(7u + static_cast<std::uint64_t>(index)).next_u64()};
 }
 
+int own_hand_drawer(const PlantedLearner& learner) {
+  const std::vector<int> unseen = unseen_drawers();
+  return unseen[Rng(learner.seed).fork(98).below(unseen.size())];
+}
+
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
-                                                 int learners_per_letter, std::uint64_t seed, ExpertiseMode mode) {
+                                                 int learners_per_letter, std::uint64_t seed, ExpertiseMode mode,
+                                                 bool own_hands) {
   PlantedWeaknessReport report;
+  report.own_hands = own_hands;
+  auto with_hand = [own_hands](PlantedLearner learner) {
+    if (own_hands) learner.hand_drawer = own_hand_drawer(learner);
+    return learner;
+  };
   report.pretest_words = pretest_words(kit);
   const Rng root(seed);
   for (char letter : kLetters) {
     PlantedLetterRow row{letter, letter_skill(kit, letter), 0, 0, std::vector<int>(3, 0), std::vector<int>(3, 0)};
     for (int i = 0; i < learners_per_letter; ++i) {
-      const PlantedLearner learner{letter, kFaults[i % 3],
-                                   root.fork(1000u * static_cast<unsigned char>(letter) + i).next_u64()};
+      const PlantedLearner learner =
+          with_hand({letter, kFaults[i % 3], root.fork(1000u * static_cast<unsigned char>(letter) + i).next_u64()});
       const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, learner, mode);
       const bool hit = !e.targets.empty() && e.targets.front() == row.skill;
       ++row.learners;
@@ -159,7 +171,8 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
   const std::vector<Segmentation> pool = demo_skills(kit.expert_pool());
   const int min_steps = kit.curriculum_config().min_skill_steps;
   for (int i = 0; i < learners_per_letter; ++i) {
-    const ExpertiseEstimate e = diagnose(kit, glyphs, report.pretest_words, noise_only_learner(seed, i), mode);
+    const ExpertiseEstimate e =
+        diagnose(kit, glyphs, report.pretest_words, with_hand(noise_only_learner(seed, i)), mode);
     double lowest = 0.0, lowest_drilled = 0.0;
     for (int m : e.targets) lowest = std::min(lowest, e.expertise[static_cast<std::size_t>(m)]);
     std::vector<int> drilled = teachable_ranking(e, pool, min_steps);
@@ -175,7 +188,9 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
 }
 
 std::string planted_weakness_table(const PlantedWeaknessReport& report) {
-  std::string out = "pre-test words:";
+  std::string out =
+      report.own_hands ? "every learner's letters in its own hand (one of the unseen drawers 11-15)\n" : std::string();
+  out += "pre-test words:";
   for (const std::string& w : report.pretest_words) out += " " + w;
   out +=
       "\n\n| letter | its skill | top target is its skill | distorted | other drawer | straight line "

@@ -11,6 +11,9 @@
 //   straight line a straight line from where the letter starts to where it ends (same number of points).
 // A noise-only learner has the background hand only. All seeded: learner i of letter L uses
 // Rng(seed).fork(1000 * L + i).
+// With own hands, every learner writes all its letters in the shape of one unseen drawer (11..15, drawn per
+// learner; the other-drawer fault then takes a drawer other than that one), as real learners do: the table
+// then asks whether the fault is found when nothing the learner writes is the expert's shape.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -30,6 +33,7 @@ struct PlantedLearner {
   char letter = 0;  // 0 with LetterFault::None
   LetterFault fault = LetterFault::None;
   std::uint64_t seed = 0;
+  int hand_drawer = 0;  // whose shapes the learner's letters have: 0 the paper's, else that Omniglot drawer's
 };
 
 // The learner's trial for `word` (word_index keeps the trials of one learner independent).
@@ -43,6 +47,8 @@ std::vector<Json> planted_pretest_trials(const ClassicDrawerGlyphs& glyphs, cons
 std::vector<std::string> pretest_words(const WritingKit& kit);
 // Noise-only learner `index` of a run with `seed` (the planted table's noise-only row).
 PlantedLearner noise_only_learner(std::uint64_t seed, int index);
+// An unseen drawer (unseen_drawers()) drawn from the learner's seed: its own hand in an own-hands table.
+int own_hand_drawer(const PlantedLearner& learner);
 
 // Expertise below this (Alg. 2's E_m, <= 0) counts as a confident target. Why this value: one missing
 // skill in one trial with reward -0.3 (a mediocre pre-test word) at position j = 2 costs 0.15; a noise-only
@@ -59,6 +65,7 @@ struct PlantedLetterRow {
 };
 
 struct PlantedWeaknessReport {
+  bool own_hands = false;
   std::vector<std::string> pretest_words;
   std::vector<PlantedLetterRow> letters;
   int noise_learners = 0;
@@ -74,7 +81,7 @@ struct PlantedWeaknessReport {
 // confident-target threshold is the same for both.
 PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const ClassicDrawerGlyphs& glyphs,
                                                  int learners_per_letter, std::uint64_t seed,
-                                                 ExpertiseMode mode = ExpertiseMode::Alg2);
+                                                 ExpertiseMode mode = ExpertiseMode::Alg2, bool own_hands = false);
 
 std::string planted_weakness_table(const PlantedWeaknessReport& report);
 

@@ -36,5 +36,23 @@ TEST(WritingPlantedWeakness, EachFaultChangesItsLetterOnly) {
             planted_trial(classic_glyphs(), word, {'a', LetterFault::None, 4}, 0).points);
 }
 
+TEST(WritingPlantedWeakness, AnOwnHandWritesEveryLetterInAnUnseenDrawersShape) {
+  const std::string word = "ct-b^e";
+  const std::vector<int> unseen = unseen_drawers();
+  PlantedLearner own{'b', LetterFault::OtherDrawer, 4};
+  own.hand_drawer = own_hand_drawer(own);
+  EXPECT_NE(std::find(unseen.begin(), unseen.end(), own.hand_drawer), unseen.end()) << own.hand_drawer;
+  EXPECT_EQ(own_hand_drawer(own), own.hand_drawer);  // drawn from the learner's seed
+  const writing::WritingTrial paper = planted_trial(classic_glyphs(), word, {'b', LetterFault::OtherDrawer, 4}, 0);
+  const writing::WritingTrial mine = planted_trial(classic_glyphs(), word, own, 0);
+  EXPECT_LT(common_prefix(paper, mine), paper.points.size() / 10);  // the first letter is already another shape
+  // The fault still changes its letter only: the same hand without it agrees until the 'b'.
+  PlantedLearner plain = own;
+  plain.fault = LetterFault::None;
+  const std::size_t same = common_prefix(planted_trial(classic_glyphs(), word, plain, 0), mine);
+  EXPECT_GT(same, 5u);
+  EXPECT_LT(same, mine.points.size());
+}
+
 }  // namespace
 }  // namespace sc
