@@ -188,9 +188,9 @@ CommandRunner setup_train_skills(CLI::App& sub) {
 
 const CommandRegistration kTrainSkillsCommandRegistration{
     {"train-skills", "Train a task's CompILE skill model on expert demonstrations",
-     "skillcoach train-skills --task writing --seed 3 --demos 500 --augment 1 --augment-drawers paper --augment-mouse "
-     "--set straight_through_latents=true --set warm_start_units=true --set warm_start_unit_weight=10 "
-     "--out assets/models/writing.pt",
+     "skillcoach train-skills --task writing --seed 3 --demos 333 --augment 2 --augment-drawers paper --augment-mouse "
+     "--augment-other-hands 1 --set straight_through_latents=true --set warm_start_units=true "
+     "--set warm_start_unit_weight=10 --out assets/models/writing.pt",
      setup_train_skills}};
 
 }  // namespace
