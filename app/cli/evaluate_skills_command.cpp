@@ -38,6 +38,7 @@
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
 #include "teaching/tasks/writing_kit.hpp"
+#include "teaching/tasks/writing_noise_floor.hpp"
 #include "teaching/tasks/writing_planted_weakness.hpp"
 #include "teaching/tasks/writing_robustness.hpp"
 
@@ -55,6 +56,7 @@ struct EvaluateArgs {
   bool planted = false;
   bool own_hands = false;  // --planted-weaknesses: every learner writes in an unseen drawer's shapes
   bool noise_floor = false;
+  bool record = false;  // --noise-floor: write the calibrated floor into the model's sidecar
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
@@ -123,6 +125,13 @@ std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& a
   return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, std::string(to_string(args.task))));
 }
 
+// The writing kit the planted and noise-floor tables diagnose with: the model's recorded noise floor, as the app.
+std::unique_ptr<WritingKit> evaluation_writing_kit(const EvaluateArgs& args) {
+  WritingKitOptions options;
+  if (!args.time_heuristic) options.execution_noise_floor = recorded_noise_floor(args.model);
+  return std::make_unique<WritingKit>(robustness_extractor(args), "", options);
+}
+
 // The robustness table (writing): the model (or the time heuristic) on words by realistic learners.
 int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
   if (args.task != TaskKind::writing) throw InputError("--robustness", "only for --task writing");
@@ -145,7 +154,8 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
 // Planted weaknesses under realistic input (writing): Alg. 2 on the app's pre-test written by planted learners.
 int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
   if (args.task != TaskKind::writing) throw InputError("--planted-weaknesses", "only for --task writing");
-  const WritingKit kit(robustness_extractor(args), "");
+  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args);
+  const WritingKit& kit = *kit_owner;
   std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
                args.learners, args.learners, static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
@@ -166,17 +176,19 @@ int print_noise_floor(const EvaluateArgs& args, std::uint64_t seed) {
     throw InputError("--noise-floor",
                      "only for --task writing here (parking: "
                      "evaluate-diagnosis --noise-floor)");
-  const WritingKit kit(robustness_extractor(args), "");
+  if (args.record && args.time_heuristic) throw InputError("--record", "needs a model file (--model)");
+  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args);
+  const WritingKit& kit = *kit_owner;
   std::fprintf(stderr, "evaluate-skills: %d noise-only learners (seed %llu)...\n", args.learners,
                static_cast<unsigned long long>(seed));
-  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
-  const std::vector<std::string> words = pretest_words(kit);
-  std::vector<std::vector<Json>> learners;
-  for (int i = 0; i < args.learners; ++i)
-    learners.push_back(planted_pretest_trials(glyphs, words, noise_only_learner(seed, i)));
+  const NoiseFloorCalibration calibration = calibrate_writing_noise_floor(kit, args.learners, seed);
   std::printf("%s, seed %llu: %s", args.time_heuristic ? "time heuristic" : args.model.c_str(),
               static_cast<unsigned long long>(seed),
-              noise_floor_report(calibrate_noise_floor(kit, learners), kit.execution_noise_floor()).c_str());
+              noise_floor_report(calibration, kit.execution_noise_floor()).c_str());
+  if (args.record) {
+    record_noise_floor(args.model, calibration, seed);
+    std::printf("recorded %.3f in %s\n", calibration.floor(), model_sidecar_path(args.model).string().c_str());
+  }
   return 0;
 }
 
@@ -258,7 +270,7 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
   auto* noise_floor = sub.add_flag(
       "--noise-floor", args->noise_floor,
       "Writing: print the noise-only learners' segment scores instead, and the noise floor they give quality-aware "
-      "expertise (docs/skills.md \"Noise floor\")");
+      "expertise (docs/skills.md \"A fourth change: a noise floor\")");
   sub.add_option("--learners", args->learners,
                  "Learners per letter (and noise-only learners) for --planted-weaknesses, learners for --noise-floor")
       ->capture_default_str()
@@ -276,6 +288,10 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
       ->needs(planted);
   planted->excludes(sub.get_option("--robustness"));
   noise_floor->excludes(planted)->excludes(sub.get_option("--robustness"));
+  sub.add_flag("--record", args->record,
+               "With --noise-floor: record the floor in the model's JSON sidecar, where the app reads it "
+               "(train-skills does this for every writing model it trains)")
+      ->needs(noise_floor);
   return [args] { return run(*args); };
 }
 

@@ -1,7 +1,7 @@
 // skillcoach train-skills --task parking|writing [--data DIR] [--iterations N] [--seed S] [--set K=V] --out FILE:
 // trains the task's CompILE model at the paper's defaults (CompileConfig::defaults_for) on the expert's
 // demonstrations (generated when no --data is given), holding out 10 % for early stopping, and writes the
-// model file plus its JSON sidecar. Same seed and data on the same machine -> the same model bytes.
+// model file plus its JSON sidecar (for writing with the noise floor calibrated with the model). Same seed and data on the same machine -> the same model bytes.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -15,8 +15,11 @@
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/learners/parking/augmented_parking_demos.hpp"
+#include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
+#include "teaching/tasks/writing_kit.hpp"
+#include "teaching/tasks/writing_noise_floor.hpp"
 
 namespace sc::cli {
 namespace {
@@ -30,13 +33,14 @@ struct TrainArgs {
   int demos = 1000;
   int iterations = -1;  // -1: the task's default
   unsigned long long seed = 0;
-  std::vector<std::string> overrides;        // --set key=value
-  bool fix_boundaries = false;               // diagnostic: boundaries fixed at the true symbol edges
-  int augment = 0;                           // realistic copies per demonstration (0 = the expert's only)
-  std::string augment_drawers = "training";  // writing: "training" (paper's + drawers 1-10) or "paper"
-  bool augment_mouse = false;                // writing: copies are also mouse-sampled
-  int augment_other_hands = 0;               // writing: copies by drawers 1-10, boundaries carried by alignment
-  bool augment_keyed = false;                // parking: one more copy per plan, keyboard keys on clean states
+  std::vector<std::string> overrides;              // --set key=value
+  bool fix_boundaries = false;                     // diagnostic: boundaries fixed at the true symbol edges
+  int augment = 0;                                 // realistic copies per demonstration (0 = the expert's only)
+  std::string augment_drawers = "training";        // writing: "training" (paper's + drawers 1-10) or "paper"
+  bool augment_mouse = false;                      // writing: copies are also mouse-sampled
+  int augment_other_hands = 0;                     // writing: copies by drawers 1-10, boundaries carried by alignment
+  bool augment_keyed = false;                      // parking: one more copy per plan, keyboard keys on clean states
+  int noise_floor_learners = kNoiseFloorLearners;  // writing: learners calibrating the recorded floor (0: none)
 };
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
@@ -85,6 +89,17 @@ SkillDataSet generate_augmented_demos(const TrainArgs& args) {
       args.augment_drawers == "paper" ? AugmentDrawers::PaperOnly : AugmentDrawers::PaperAndTraining;
   return generate_augmented_writing_demos(args.demos, args.augment, args.seed,
                                           {drawers, args.augment_mouse, args.augment_other_hands});
+}
+
+// Quality-aware expertise's noise floor belongs to the model that segments (writing_noise_floor.hpp): calibrated
+// with the model just written and recorded in its sidecar (~1 min).
+void record_writing_noise_floor(const std::string& out, int learners) {
+  std::fprintf(stderr, "writing: calibrating the noise floor on %d noise-only learners (seed %llu)...\n", learners,
+               static_cast<unsigned long long>(kNoiseFloorSeed));
+  const WritingKit kit(std::make_shared<CompileExtractor>(CompileExtractor::load(out, "writing")), "");
+  const NoiseFloorCalibration calibration = calibrate_writing_noise_floor(kit, learners, kNoiseFloorSeed);
+  record_noise_floor(out, calibration, kNoiseFloorSeed);
+  std::printf("%s: noise floor %.3f recorded in its sidecar\n", out.c_str(), calibration.floor());
 }
 
 int run(const TrainArgs& args) {
@@ -140,6 +155,8 @@ int run(const TrainArgs& args) {
   std::printf("%s: %d iterations in %.1f s (best %d, valid NLL %.4g%s), %d parameters\n", args.out.c_str(),
               summary.iterations_run, summary.seconds, summary.best_iteration, summary.best_valid_nll,
               summary.stopped_early ? ", stopped early" : "", model.parameter_count());
+  if (args.task == TaskKind::writing && !args.fix_boundaries && args.noise_floor_learners > 0)
+    record_writing_noise_floor(args.out, args.noise_floor_learners);
   return 0;
 }
 
@@ -182,6 +199,11 @@ CommandRunner setup_train_skills(CLI::App& sub) {
   sub.add_flag("--augment-keyed", args->augment_keyed,
                "Parking with --augment: each plan also gets a copy with keyboard keys for its actions on the clean "
                "states (docs/skills.md \"Why the keyboard rows disagree\")");
+  sub.add_option("--noise-floor-learners", args->noise_floor_learners,
+                 "Writing: noise-only learners on whom the trained model's noise floor is calibrated and recorded in "
+                 "its sidecar (0: record none; docs/skills.md \"A fourth change: a noise floor\")")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

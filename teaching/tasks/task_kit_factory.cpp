@@ -6,29 +6,31 @@
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/writing_kit.hpp"
+#include "teaching/tasks/writing_noise_floor.hpp"
 
 namespace sc {
 namespace {
 
 struct ChosenExtractor {
   std::shared_ptr<const SkillExtractor> extractor;
-  std::string notice;  // why the time heuristic is used; empty for the trained model
+  std::string notice;           // why the time heuristic is used; empty for the trained model
+  std::filesystem::path model;  // the model file loaded; empty for the time heuristic
 };
 
 ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::path& model) {
   const std::string task(to_string(kind));
-  if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), ""};
+  if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), "", model};
   const int slices = kind == TaskKind::parking ? kParkingTimeSlices : kWritingTimeSlices;
   const std::string relative = "assets/models/" + task + ".pt";
   const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
   // The missing case names the asset relative to the asset folder, so the notice (shown on screen and in
   // goldens) does not depend on where the checkout lives.
   if (!std::filesystem::exists(shipped))
-    return {std::make_shared<TimeHeuristicExtractor>(slices), relative + ": missing; using the time heuristic"};
+    return {std::make_shared<TimeHeuristicExtractor>(slices), relative + ": missing; using the time heuristic", {}};
   try {
-    return {std::make_shared<CompileExtractor>(CompileExtractor::load(shipped, task)), ""};
+    return {std::make_shared<CompileExtractor>(CompileExtractor::load(shipped, task)), "", shipped};
   } catch (const InputError& e) {
-    return {std::make_shared<TimeHeuristicExtractor>(slices), std::string(e.what()) + "; using the time heuristic"};
+    return {std::make_shared<TimeHeuristicExtractor>(slices), std::string(e.what()) + "; using the time heuristic", {}};
   }
 }
 
@@ -45,7 +47,14 @@ std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, Go
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {
   if (task == TaskKind::parking) return make_parking_kit(model, region, std::nullopt);
   ChosenExtractor chosen = choose_skill_extractor(task, model);
-  return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, WritingKitOptions{});
+  WritingKitOptions options;
+  try {
+    if (!chosen.model.empty()) options.execution_noise_floor = recorded_noise_floor(chosen.model);
+  } catch (const InputError& e) {
+    if (!model.empty()) throw;  // the user's own model: say so and stop, as for its model file
+    chosen.notice = std::string(e.what()) + "; quality-aware expertise without a noise floor";
+  }
+  return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, options);
 }
 
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model, GoalRegion region) {

@@ -18,12 +18,6 @@
 
 namespace sc {
 
-// Quality-aware expertise's noise floor for writing (execution_expertise.hpp): the 1st percentile of the
-// segment scores of 200 noise-only planted learners at seed 0 with the shipped model
-// (`skillcoach evaluate-skills --task writing --noise-floor --learners 200 --seed 0`, execution_noise_floor.hpp;
-// WritingNoiseFloor.TheShippedFloorIsTheShippedModelsCalibration re-checks it). Re-calibrate with a new model.
-inline constexpr double kWritingExecutionNoiseFloor = -0.530;
-
 // (x px, y px, 0) per step of a writing StepSequence.
 std::vector<TracePoint3> writing_trace_points(const StepSequence& steps);
 

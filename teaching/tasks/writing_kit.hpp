@@ -25,6 +25,9 @@ struct WritingKitOptions {
   writing::AlphabetKind alphabet = writing::AlphabetKind::Classic;
   int pool_words = 30;  // distinct words (the classic generator has 60 in all)
   std::uint64_t seed = 0;
+  // Quality-aware expertise's noise floor: the one recorded with the extractor's model
+  // (writing_noise_floor.hpp); none for a model without one or the time heuristic.
+  std::optional<double> execution_noise_floor;
 };
 
 // Distinct words drawn from the alphabet's generator with Rng(seed) (classic: generate_classic_words
@@ -61,10 +64,10 @@ class WritingKit final : public TaskKit {
   // (x, y) of the pen; the writing score's overlap credit between the expert's segment and the learner's
   // aligned pen points (writing_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
-  // Calibrated for the shipped model (writing_execution.hpp).
-  std::optional<double> execution_noise_floor() const override { return kWritingExecutionNoiseFloor; }
-  // Quality-aware: it finds the letter a learner writes badly in 90-94 % of planted learners, Alg. 2 in
-  // 73-81 %, because a badly written letter is usually still segmented as that letter (docs/skills.md).
+  // WritingKitOptions::execution_noise_floor: calibrated with the kit's model (writing_noise_floor.hpp).
+  std::optional<double> execution_noise_floor() const override { return options_.execution_noise_floor; }
+  // Quality-aware: it finds the letter a learner writes badly for 89-99 of 100 planted learners, Alg. 2 for
+  // 57-60, because a badly written letter is usually still segmented as that letter (docs/skills.md).
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::QualityAware; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;

@@ -12,7 +12,7 @@ using test::scratch_path;
 TEST(TrainSkillsCommand, SameSeedGivesTheSameModelBytesAndAnotherSeedDoesNot) {
   const auto a = scratch_path("train_skills", "a.pt"), b = scratch_path("train_skills", "b.pt"),
              c = scratch_path("train_skills", "c.pt");
-  const std::string common = "train-skills --task writing --demos 6 --iterations 2 ";
+  const std::string common = "train-skills --task writing --demos 6 --iterations 2 --noise-floor-learners 0 ";
   ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + a.string()).exit_code, 0);
   ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + b.string()).exit_code, 0);
   ASSERT_EQ(run_skillcoach(common + "--seed 6 --out " + c.string()).exit_code, 0);
@@ -38,8 +38,8 @@ TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
 
 TEST(TrainSkillsCommand, ProgressIsPlainLinesWhenStderrIsNotATerminal) {
   const auto model = scratch_path("train_skills", "progress.pt");
-  const auto r =
-      run_skillcoach("train-skills --task writing --demos 6 --iterations 3 --seed 1 --out " + model.string());
+  const auto r = run_skillcoach(
+      "train-skills --task writing --demos 6 --iterations 3 --seed 1 --noise-floor-learners 0 --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find('\r'), std::string::npos);
   EXPECT_NE(r.output.find("it 1/3  loss"), std::string::npos) << r.output;
@@ -54,9 +54,14 @@ TEST(TrainSkillsCommand, TrainsOnAFolderOfTrialFiles) {
     std::filesystem::copy_file(test::wavy_writing_trial("wavy.json"), dir / ("trial" + std::to_string(i) + ".json"),
                                std::filesystem::copy_options::overwrite_existing);
   const auto model = scratch_path("train_skills", "from_data.pt");
-  const auto r =
-      run_skillcoach("train-skills --task writing --data " + dir.string() + " --iterations 1 --out " + model.string());
+  const auto r = run_skillcoach("train-skills --task writing --data " + dir.string() +
+                                " --iterations 1 --noise-floor-learners 2 --out " + model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  // A writing model records the noise floor it was calibrated to (here on 2 learners), where the kit reads it.
+  const Json floor = read_json_file(model.string() + ".json").at("execution_noise_floor");
+  EXPECT_TRUE(floor.at("value").is_number()) << floor;
+  EXPECT_EQ(floor.at("learners"), 2);
+  EXPECT_NE(r.output.find("noise floor"), std::string::npos) << r.output;
   EXPECT_NE(read_json_file(model.string() + ".json").at("data").get<std::string>().find("3 writing trial files"),
             std::string::npos);
 }

@@ -16,7 +16,7 @@ namespace {
 
 const WritingKit& small_kit() {
   static const WritingKit kit(std::make_shared<TimeHeuristicExtractor>(kWritingTimeSlices), "",
-                              WritingKitOptions{{}, writing::AlphabetKind::Classic, 8, 0});
+                              WritingKitOptions{{}, writing::AlphabetKind::Classic, 8, 0, std::nullopt});
   return kit;
 }
 

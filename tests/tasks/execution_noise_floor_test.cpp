@@ -23,10 +23,9 @@ TEST(NoiseFloorCalibration, PercentilesInterpolateBetweenOrderStatistics) {
   EXPECT_DOUBLE_EQ(c.floor(), c.percentile(kNoiseFloorPercentile));
 }
 
-// The writing kit's floor is the calibration of the shipped model (writing_execution.hpp: 200 learners at
-// seed 0 gave -0.530). 30 of those learners must bracket it between their 0.5th and 3rd percentiles; a new
-// model that segments differently moves the floor and fails this until kWritingExecutionNoiseFloor is
-// re-calibrated.
+// The writing kit's floor is the one recorded in the shipped model's sidecar (writing_noise_floor.hpp: 200
+// learners at seed 0 gave -0.530). 30 of those learners must bracket it between their 0.5th and 3rd
+// percentiles; a sidecar whose floor belongs to another model fails this.
 TEST(WritingNoiseFloor, TheShippedFloorIsTheShippedModelsCalibration) {
   ASSERT_TRUE(std::filesystem::exists(asset_dir() / "models" / "writing.pt"));
   const auto kit = make_task_kit(TaskKind::writing);

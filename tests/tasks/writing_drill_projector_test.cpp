@@ -14,7 +14,7 @@ namespace {
 
 const WritingKit& writing_projector_kit() {
   static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "",
-                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 5, 9});
+                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 5, 9, std::nullopt});
   return k;
 }
 

@@ -13,7 +13,7 @@ namespace {
 
 const WritingKit& writing_kit() {
   static const WritingKit k(std::make_shared<TimeHeuristicExtractor>(8), "",
-                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
+                            WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5, std::nullopt});
   return k;
 }
 
@@ -28,7 +28,7 @@ TEST(WritingKit, PoolHoldsDistinctGoldWordsSegmentedTwice) {
     for (std::size_t j = 0; j < i; ++j) EXPECT_NE(d.scenario, writing_kit().expert_pool()[j].scenario);
   }
   const WritingKit again(std::make_shared<TimeHeuristicExtractor>(8), "",
-                         WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5});
+                         WritingKitOptions{{}, writing::AlphabetKind::Classic, 6, 5, std::nullopt});
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(again.expert_pool()[i].trial, writing_kit().expert_pool()[i].trial);
 }
 
