@@ -37,6 +37,7 @@
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_noise_floor.hpp"
 #include "teaching/tasks/writing_planted_weakness.hpp"
@@ -127,9 +128,7 @@ std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& a
 
 // The writing kit the planted and noise-floor tables diagnose with: the model's recorded noise floor, as the app.
 std::unique_ptr<WritingKit> evaluation_writing_kit(const EvaluateArgs& args) {
-  WritingKitOptions options;
-  if (!args.time_heuristic) options.execution_noise_floor = recorded_noise_floor(args.model);
-  return std::make_unique<WritingKit>(robustness_extractor(args), "", options);
+  return make_writing_kit(robustness_extractor(args), args.time_heuristic ? "" : args.model);
 }
 
 // The robustness table (writing): the model (or the time heuristic) on words by realistic learners.

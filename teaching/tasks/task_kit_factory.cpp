@@ -47,14 +47,20 @@ std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, Go
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {
   if (task == TaskKind::parking) return make_parking_kit(model, region, std::nullopt);
   ChosenExtractor chosen = choose_skill_extractor(task, model);
-  WritingKitOptions options;
   try {
-    if (!chosen.model.empty()) options.execution_noise_floor = recorded_noise_floor(chosen.model);
+    return make_writing_kit(chosen.extractor, chosen.model, chosen.notice);
   } catch (const InputError& e) {
     if (!model.empty()) throw;  // the user's own model: say so and stop, as for its model file
-    chosen.notice = std::string(e.what()) + "; quality-aware expertise without a noise floor";
+    return make_writing_kit(chosen.extractor, {},
+                            std::string(e.what()) + "; quality-aware expertise without a noise floor");
   }
-  return std::make_unique<WritingKit>(chosen.extractor, chosen.notice, options);
+}
+
+std::unique_ptr<WritingKit> make_writing_kit(std::shared_ptr<const SkillExtractor> extractor,
+                                             const std::filesystem::path& model, std::string notice) {
+  WritingKitOptions options;
+  if (!model.empty()) options.execution_noise_floor = recorded_noise_floor(model);
+  return std::make_unique<WritingKit>(std::move(extractor), std::move(notice), options);
 }
 
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model, GoalRegion region) {

@@ -10,6 +10,7 @@
 #include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_scenario.hpp"
 #include "teaching/sessions/task_kit.hpp"
+#include "teaching/tasks/writing_kit.hpp"
 
 namespace sc {
 
@@ -23,6 +24,11 @@ std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::pat
 // `evaluate-diagnosis --apply-noise-floor`; the shipped kit uses none, ParkingKitOptions).
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
                                           std::optional<double> execution_noise_floor);
+// A writing kit (default options) for `extractor`, with the noise floor recorded with `model`
+// (writing_noise_floor.hpp; none when `model` is empty or records none): what make_task_kit builds for writing,
+// for callers that choose the extractor themselves (evaluate-skills, tests).
+std::unique_ptr<WritingKit> make_writing_kit(std::shared_ptr<const SkillExtractor> extractor,
+                                             const std::filesystem::path& model, std::string notice = "");
 // The same for a task named in text (a stored session's task column): InputError for anything else.
 std::unique_ptr<TaskKit> make_task_kit(const std::string& task, const std::filesystem::path& model = {},
                                        GoalRegion region = GoalRegion::WholeLot);

@@ -21,8 +21,8 @@
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "teaching/tasks/writing_kit.hpp"
-#include "teaching/tasks/writing_noise_floor.hpp"
 #include "teaching/tasks/writing_planted_weakness.hpp"
 
 namespace sc {
@@ -200,14 +200,12 @@ struct WritingSetup {
 const WritingSetup& writing_setup() {
   static const WritingSetup setup = [] {
     WritingSetup s;
-    WritingKitOptions options{{}, writing::AlphabetKind::Classic, 30, 0, std::nullopt};
-    std::shared_ptr<const SkillExtractor> extractor;
-    if (std::filesystem::exists(shipped_writing_model())) {
-      extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(shipped_writing_model(), "writing"));
-      options.execution_noise_floor = recorded_noise_floor(shipped_writing_model());
-    } else
-      extractor = std::make_shared<TimeHeuristicExtractor>(kWritingTimeSlices);
-    s.kit = std::make_unique<WritingKit>(extractor, "", options);
+    if (std::filesystem::exists(shipped_writing_model()))
+      s.kit = make_writing_kit(
+          std::make_shared<CompileExtractor>(CompileExtractor::load(shipped_writing_model(), "writing")),
+          shipped_writing_model());
+    else
+      s.kit = make_writing_kit(std::make_shared<TimeHeuristicExtractor>(kWritingTimeSlices), {});
     s.pretest = select_diverse_scenarios(demo_skills(s.kit->expert_pool()), 10).scenarios();
     return s;
   }();
