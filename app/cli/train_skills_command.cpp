@@ -1,7 +1,8 @@
 // skillcoach train-skills --task parking|writing [--data DIR] [--iterations N] [--seed S] [--set K=V] --out FILE:
 // trains the task's CompILE model at the paper's defaults (CompileConfig::defaults_for) on the expert's
 // demonstrations (generated when no --data is given), holding out 10 % for early stopping, and writes the
-// model file plus its JSON sidecar (for writing with the noise floor calibrated with the model). Same seed and data on the same machine -> the same model bytes.
+// model file plus its JSON sidecar (for writing with the noise floor calibrated with the model). Same seed
+// and data on the same machine -> the same model bytes.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
