@@ -47,7 +47,7 @@ struct TrainArgs {
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
 // spelling (the sidecar's) and the usual range checks (CompileConfig::validate). Numbers are read as JSON.
 CompileConfig with_overrides(CompileConfig config, const std::vector<std::string>& overrides) {
-  Json doc = to_json(config);
+  Json doc = to_json(config, /*every_field=*/true);
   for (const std::string& item : overrides) {
     const auto eq = item.find('=');
     const std::string key = item.substr(0, eq);

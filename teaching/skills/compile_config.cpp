@@ -102,10 +102,11 @@ void CompileConfig::validate(const std::string& where) const {
   need(!warm_start_units || warm_start_iterations > 0, "warm_start_units needs warm_start_iterations > 0");
   need(warm_start_unit_weight >= 0.0 && std::isfinite(warm_start_unit_weight),
        "warm_start_unit_weight must be a finite number >= 0");
+  need(encoder_reads_actions || uses_states(), "encoder_reads_actions=false needs a mode with states");
 }
 
-Json to_json(const CompileConfig& c) {
-  return Json{{"task", c.task},
+Json to_json(const CompileConfig& c, bool every_field) {
+  Json out{{"task", c.task},
               {"mode", to_string(c.mode)},
               {"state_dim", c.state_dim},
               {"action_dim", c.action_dim},
@@ -130,6 +131,8 @@ Json to_json(const CompileConfig& c) {
               {"warm_start_units", c.warm_start_units},
               {"warm_start_unit_weight", c.warm_start_unit_weight},
               {"beta_usage", c.beta_usage}};
+  if (every_field || !c.encoder_reads_actions) out["encoder_reads_actions"] = c.encoder_reads_actions;
+  return out;
 }
 
 CompileConfig compile_config_from_json(const JsonView& v) {
@@ -168,6 +171,7 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   if (const auto units = v.find("warm_start_units")) c.warm_start_units = units->boolean();
   if (const auto weight = v.find("warm_start_unit_weight")) c.warm_start_unit_weight = weight->number();
   if (const auto usage = v.find("beta_usage")) c.beta_usage = usage->number();
+  if (const auto reads = v.find("encoder_reads_actions")) c.encoder_reads_actions = reads->boolean();
   return c;
 }
 

@@ -74,6 +74,12 @@ struct CompileConfig {
   // two letters keeps both, because an unused skill's decoder is untrained and moving one letter there first
   // costs reconstruction; the bonus pays for that move. 0 = off (the paper's objective).
   double beta_usage = 0.0;
+  // The encoder reads the actions beside the states (the paper's configuration). false: it reads the
+  // states only (its action embedding gets zeros), so where the model cuts and which skill it names depend on
+  // the motion alone; the decoder still reconstructs the actions. Why: a keyboard gives other action values
+  // for the same motion, and an encoder reading them names other skills (docs/skills.md, parking). Needs a
+  // mode with states.
+  bool encoder_reads_actions = true;
 
   // Paper: latent 16, K 4, Poisson 10, beta_s 1, statediff+action, lr 1e-3, batch 100 (12-D states).
   static CompileConfig parking_defaults();
@@ -89,7 +95,9 @@ struct CompileConfig {
   void validate(const std::string& where) const;
 };
 
-Json to_json(const CompileConfig& config);
+// Fields that are off by default and newer than the shipped models are written only when on (so those models
+// save byte for byte as before); `every_field` writes them all (train-skills' --set keys).
+Json to_json(const CompileConfig& config, bool every_field = false);
 // Reads the fields written by to_json; errors name `view`'s file and JSON path.
 CompileConfig compile_config_from_json(const JsonView& view);
 

@@ -65,7 +65,7 @@ Encoded encode(const CompileNetwork& net, const Batch& batch, bool relaxed, at::
   const auto& cfg = net.config;
   const std::int64_t b_size = batch.size, t_max = batch.steps, positions = t_max + 1, hid = cfg.hidden;
   const int k_count = cfg.num_segments;
-  Tensor x = net.enc_action(batch.actions);
+  Tensor x = net.enc_action(encoder_actions(net, batch));
   if (cfg.uses_states()) x = torch::cat({net.enc_state(batch.states), x}, -1);  // state first (§3.3)
   const Tensor xproj = net.enc_ih(x.view({positions * b_size, hid}).index_select(0, batch.pack_index));
   const Tensor pos_mask = boundary_position_mask(batch);

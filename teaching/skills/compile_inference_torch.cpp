@@ -94,7 +94,7 @@ void run_pass(const Batch& batch, const float* xproj, const float* w_hh, std::in
 Tensor project_inputs(const CompileNetwork& net, const Batch& batch) {
   const auto& cfg = net.config;
   const std::int64_t positions = batch.steps + 1;
-  Tensor x = net.enc_action(batch.actions);
+  Tensor x = net.enc_action(encoder_actions(net, batch));
   if (cfg.uses_states()) x = torch::cat({net.enc_state(batch.states), x}, -1);  // state first (§3.3)
   return net.enc_ih(x.view({positions * batch.size, cfg.hidden}).index_select(0, batch.pack_index)).contiguous();
 }

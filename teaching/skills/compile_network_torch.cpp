@@ -100,6 +100,10 @@ std::vector<torch::Tensor> CompileNetwork::parameters() {
   return out;
 }
 
+torch::Tensor encoder_actions(const CompileNetwork& net, const Batch& batch) {
+  return net.config.encoder_reads_actions ? batch.actions : torch::zeros_like(batch.actions);
+}
+
 Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config,
                  const std::vector<const std::vector<int>*>& fixed_boundaries) {
   Batch batch;

@@ -108,6 +108,9 @@ struct Batch {
 Batch make_batch(const std::vector<const StepSequence*>& steps, const CompileConfig& config,
                  const std::vector<const std::vector<int>*>& fixed_boundaries = {});
 
+// The actions the encoder embeds: the batch's, or zeros when CompileConfig::encoder_reads_actions is off.
+torch::Tensor encoder_actions(const CompileNetwork& net, const Batch& batch);
+
 // Decoder pass 1 (no autograd): open-loop steps from (h_init, c_init) [rows, H] over `packing`, writing each
 // step's input into fb_action [N, A] / fb_state [N, S] (zero at step 0; fb_state unused without states) and
 // the LSTM buffers into `run`.

@@ -82,5 +82,20 @@ TEST(CompileConfig, ModelsFromBeforeWarmStartUnitsReadAsWithout) {
   EXPECT_EQ(compile_config_from_json(JsonView(j, "old.json")).warm_start_unit_weight, 1.0);
 }
 
+TEST(CompileConfig, EncoderReadsActionsIsWrittenOnlyWhenOffSoOlderModelsSaveAsBefore) {
+  CompileConfig c = CompileConfig::parking_defaults();
+  EXPECT_TRUE(c.encoder_reads_actions);
+  EXPECT_FALSE(to_json(c).contains("encoder_reads_actions"));
+  EXPECT_EQ(to_json(c, /*every_field=*/true).at("encoder_reads_actions"), true);
+  c.encoder_reads_actions = false;
+  const Json j = to_json(c);
+  EXPECT_EQ(j.at("encoder_reads_actions"), false);
+  EXPECT_FALSE(compile_config_from_json(JsonView(j, "m.json")).encoder_reads_actions);
+  c.validate("cfg");
+  CompileConfig actions_only = CompileConfig::writing_defaults();  // action mode: nothing else to read
+  actions_only.encoder_reads_actions = false;
+  EXPECT_THROW(actions_only.validate("cfg"), InputError);
+}
+
 }  // namespace
 }  // namespace sc

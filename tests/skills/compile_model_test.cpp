@@ -26,14 +26,15 @@ std::vector<StepSequence> data() {
 }
 
 // A small statediff+action model (the parking mode), trained for two iterations.
-std::filesystem::path trained_model() {
+std::filesystem::path trained_model(bool encoder_reads_actions = true, const std::string& name = "model.scm") {
   CompileConfig c = CompileConfig::parking_defaults();
+  c.encoder_reads_actions = encoder_reads_actions;
   c.task = "parking";
   c.hidden = 16;
   c.latent_size = 5;
   c.iterations = 2;
   c.batch_size = 6;
-  const auto path = model_scratch("model.scm");
+  const auto path = model_scratch(name);
   ModelProvenance prov;
   prov.data_description = "12 synthetic sequences";
   prov.git_revision = "abc123";
@@ -151,6 +152,20 @@ TEST(CompileModel, ReplacingTheFileMidRunLeavesTheLoadedModelIntact) {
   test::write_bytes(path, original.substr(0, original.size() / 2));
   EXPECT_EQ(running.extract_all(trajectories), before);
   expect_load_error(path, "truncated model file");
+}
+
+// The same states with other actions (what a keyboard does to an expert's motion): only an encoder that reads
+// the actions may segment them differently.
+TEST(CompileModel, AnEncoderThatReadsStatesOnlySegmentsTheSameMotionAlikeWhateverTheActions) {
+  const auto trajectories = data();
+  std::vector<StepSequence> other_actions = trajectories;
+  for (auto& t : other_actions)
+    for (float& a : t.actions) a = a > 0.0f ? 0.7f : -0.7f;
+  const CompileModel states_only = CompileModel::load(trained_model(false, "states_only.scm"));
+  EXPECT_FALSE(states_only.config().encoder_reads_actions);
+  EXPECT_EQ(states_only.segment(trajectories), states_only.segment(other_actions));
+  const CompileModel paper = CompileModel::load(trained_model(true, "paper.scm"));
+  EXPECT_NE(paper.segment(trajectories), paper.segment(other_actions));
 }
 
 }  // namespace
