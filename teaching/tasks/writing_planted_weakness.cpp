@@ -8,6 +8,7 @@
 #include "teaching/sessions/session_settings.hpp"
 #include "teaching/tasks/diagnosis.hpp"
 #include "teaching/tasks/expert_demos.hpp"
+#include "teaching/tasks/writing_execution.hpp"
 
 namespace sc {
 namespace {
@@ -79,6 +80,43 @@ ExpertiseEstimate diagnose(const WritingKit& kit, const ClassicDrawerGlyphs& gly
   return diagnose_trials(kit, planted_pretest_trials(glyphs, words, learner), learner.seed, mode).expertise;
 }
 
+// Clean points of `letter` in `drawer`'s shape as a sequence the execution score reads (x, y states).
+StepSequence letter_points(const ClassicDrawerGlyphs& glyphs, char letter, int drawer) {
+  const WrittenWord w = written_word(glyphs, std::string(1, letter), {drawer});
+  StepSequence out;
+  out.state_dim = 2;
+  out.action_dim = 2;
+  for (const writing::TracePoint& p : w.points) {
+    out.states.insert(out.states.end(), {static_cast<float>(p.x), static_cast<float>(p.y)});
+    out.actions.insert(out.actions.end(), {0.0f, 0.0f});
+  }
+  return out;
+}
+
+// The other-drawer learners split by how far their letter's shape is from the expert's, then each pair.
+std::string other_drawer_lines(const PlantedWeaknessReport& report) {
+  if (report.other_drawers.empty()) return {};
+  const double cut = report.noise_floor.value_or(0.0);
+  int n[2] = {0, 0}, found[2] = {0, 0}, pairs[2] = {0, 0};
+  for (const auto& [key, cell] : report.other_drawers) {
+    const int within = cell.shape_score > cut ? 1 : 0;
+    n[within] += cell.learners, found[within] += cell.found, ++pairs[within];
+  }
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "other drawer's shape, by its clean shape score against the expert's letter (cut %.3f, the "
+                "noise floor): worse %d of %d found (%d letter-drawer pairs), within %d of %d (%d pairs)\n",
+                cut, found[0], n[0], pairs[0], found[1], n[1], pairs[1]);
+  std::string out = line;
+  out += "  letter, drawer (shape score): found / learners:";
+  for (const auto& [key, cell] : report.other_drawers) {
+    std::snprintf(line, sizeof line, " %c%d (%.2f): %d / %d", key.first, key.second, cell.shape_score, cell.found,
+                  cell.learners);
+    out += line;
+  }
+  return out + "\n";
+}
+
 }  // namespace
 
 std::string to_string(LetterFault fault) {
@@ -93,6 +131,12 @@ std::string to_string(LetterFault fault) {
       return "straight line";
   }
   return "?";
+}
+
+double other_drawer_shape_score(const ClassicDrawerGlyphs& glyphs, char letter, int drawer) {
+  const StepSequence expert = letter_points(glyphs, letter, 0), other = letter_points(glyphs, letter, drawer);
+  const StepAlignment path = align_traces(writing_trace_points(expert), writing_trace_points(other));
+  return writing_execution_reward(expert, other, path, 0, expert.length());
 }
 
 writing::WritingTrial planted_trial(const ClassicDrawerGlyphs& glyphs, const std::string& word,
@@ -148,6 +192,7 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
                                                  bool own_hands) {
   PlantedWeaknessReport report;
   report.own_hands = own_hands;
+  report.noise_floor = kit.execution_noise_floor();
   auto with_hand = [own_hands](PlantedLearner learner) {
     if (own_hands) learner.hand_drawer = own_hand_drawer(learner);
     return learner;
@@ -165,6 +210,12 @@ PlantedWeaknessReport measure_planted_weaknesses(const WritingKit& kit, const Cl
       row.top_target += hit;
       ++row.by_fault_learners[static_cast<std::size_t>(i % 3)];
       row.by_fault_top[static_cast<std::size_t>(i % 3)] += hit;
+      if (learner.fault == LetterFault::OtherDrawer) {
+        const int drawer = fault_shape(learner).drawer;
+        OtherDrawerCell& cell = report.other_drawers[{letter, drawer}];
+        if (cell.learners++ == 0) cell.shape_score = other_drawer_shape_score(glyphs, letter, drawer);
+        cell.found += hit;
+      }
     }
     report.letters.push_back(row);
   }
@@ -217,6 +268,7 @@ std::string planted_weakness_table(const PlantedWeaknessReport& report) {
                 "alone, as the trainer drills): %d of %d\n",
                 kConfidentTargetExpertise, report.noise_without_confident_drill_target, report.noise_learners);
   out += line;
+  out += other_drawer_lines(report);
   out += "noise-only learners' first target (skill: learners):";
   for (const auto& [skill, n] : report.noise_top_targets) {
     std::snprintf(line, sizeof line, " %d: %d", skill, n);

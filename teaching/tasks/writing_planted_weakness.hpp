@@ -7,7 +7,9 @@
 // realistic background hand (paper's drawers, smooth wobble 2..6 px, per-letter affine 0.08, mouse
 // sampling, hesitations) and one letter badly, its fault chosen by the learner's index:
 //   distorted     the letter's steps squashed or stretched (y scale 0.4..0.6 or 1.6..2), sheared 0.5..0.8;
-//   other drawer  the letter in another drawer's shape (any of the 14 other Omniglot drawers);
+//   other drawer  the letter in another drawer's shape (any of the 14 other Omniglot drawers; the report
+//                 splits these learners by other_drawer_shape_score, since some drawers' letters are close
+//                 to the expert's);
 //   straight line a straight line from where the letter starts to where it ends (same number of points).
 // A noise-only learner has the background hand only. All seeded: learner i of letter L uses
 // Rng(seed).fork(1000 * L + i).
@@ -16,6 +18,7 @@
 // then asks whether the fault is found when nothing the learner writes is the expert's shape.
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +67,19 @@ struct PlantedLetterRow {
   std::vector<int> by_fault_top;
 };
 
+// How far `drawer`'s `letter` is from the expert's (the paper's drawer), by the execution score quality-aware
+// expertise charges (writing_execution.hpp): both written cleanly, aligned by dynamic time warping, the other
+// moved by the mean offset; 0 = the same shape. Why: another drawer's letter is a fault only as far as its shape
+// differs, and some drawers' letters are as close to the expert's as realistic noise leaves the expert's own
+// (docs/skills.md, "Copies by other hands").
+double other_drawer_shape_score(const ClassicDrawerGlyphs& glyphs, char letter, int drawer);
+
+struct OtherDrawerCell {
+  int learners = 0;
+  int found = 0;             // learners whose first target is the letter's skill
+  double shape_score = 0.0;  // other_drawer_shape_score
+};
+
 struct PlantedWeaknessReport {
   bool own_hands = false;
   std::vector<std::string> pretest_words;
@@ -75,6 +91,9 @@ struct PlantedWeaknessReport {
   int noise_without_confident_drill_target = 0;
   std::vector<double> noise_lowest_expertise;  // per noise-only learner: its weakest target's E
   std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
+  // Other-drawer learners by letter and the drawer whose shape they write.
+  std::map<std::pair<char, int>, OtherDrawerCell> other_drawers;
+  std::optional<double> noise_floor;  // the kit's (WritingKit::execution_noise_floor); splits other_drawers
 };
 
 // `mode`: the expertise estimate the diagnosis uses (Alg. 2, the app's default, or quality-aware); the

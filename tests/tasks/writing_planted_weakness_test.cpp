@@ -54,5 +54,21 @@ TEST(WritingPlantedWeakness, AnOwnHandWritesEveryLetterInAnUnseenDrawersShape) {
   EXPECT_LT(same, mine.points.size());
 }
 
+// Measured with the shipped glyphs (docs/skills.md, "Copies by other hands"): drawer 14's `a` scores -0.33
+// against the paper's `a`, drawer 3's -0.79 - the first is found far less often as a fault.
+TEST(WritingPlantedWeakness, TheOtherDrawerShapeScoreSaysHowFarALetterIsFromTheExperts) {
+  const int paper_a = writing::default_drawer(writing::AlphabetKind::Classic, 'a');
+  EXPECT_DOUBLE_EQ(other_drawer_shape_score(classic_glyphs(), 'a', 0), 0.0);
+  EXPECT_DOUBLE_EQ(other_drawer_shape_score(classic_glyphs(), 'a', paper_a), 0.0);
+  for (char letter : std::string("abcte"))
+    for (int drawer = 1; drawer <= writing::kDrawersPerCharacter; ++drawer) {
+      const double score = other_drawer_shape_score(classic_glyphs(), letter, drawer);
+      EXPECT_GE(score, -1.0) << letter << drawer;
+      EXPECT_LE(score, 0.0) << letter << drawer;
+    }
+  EXPECT_GT(other_drawer_shape_score(classic_glyphs(), 'a', 14), -0.45);
+  EXPECT_LT(other_drawer_shape_score(classic_glyphs(), 'a', 3), -0.7);
+}
+
 }  // namespace
 }  // namespace sc
