@@ -27,10 +27,11 @@ struct Result {
   std::string output;
 };
 
-Result run(const std::string& arguments, const std::string& name) {
+// `environment`: "NAME=value" assignments for the command, or empty.
+Result run(const std::string& arguments, const std::string& name, const std::string& environment = "") {
   const auto log = scratch(name + ".log");
-  const std::string command =
-      std::string(std::getenv("SKILLCOACH_BINARY")) + " " + arguments + " > " + log.string() + " 2>&1";
+  const std::string command = environment + (environment.empty() ? "" : " ") + std::getenv("SKILLCOACH_BINARY") + " " +
+                              arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::ifstream in(log);
   std::stringstream text;
@@ -66,6 +67,38 @@ TEST(DiagnoseCommand, WritingLearnerGetsSkillsExpertiseTargetsAndDrawnDrills) {
     EXPECT_EQ(drill.at("ghost_path").size(), drill.at("trial").at("points").size());
     EXPECT_TRUE(std::filesystem::exists(png / ("drill_" + std::to_string(i + 1) + ".png")));
   }
+}
+
+// A shipped writing model whose sidecar records a floor that is not a number (a damaged install): the learner
+// is still diagnosed, without a floor, and the note says which file and why; it is not refused as a user's
+// own model would be.
+TEST(DiagnoseCommand, ADamagedShippedSidecarFallsBackToNoNoiseFloorWithANote) {
+  const std::filesystem::path assets = std::getenv("SKILLCOACH_ASSET_DIR");
+  const auto copy = scratch("damaged_assets");
+  std::filesystem::create_directories(copy / "models");
+  for (const auto& entry : std::filesystem::directory_iterator(assets))
+    if (entry.path().filename() != "models")
+      std::filesystem::create_directory_symlink(entry.path(), copy / entry.path().filename());
+  for (const char* file : {"writing.pt", "parking.pt", "parking.pt.json"})
+    std::filesystem::create_symlink(assets / "models" / file, copy / "models" / file);
+  Json sidecar = read_json_file(assets / "models" / "writing.pt.json");
+  sidecar["execution_noise_floor"]["value"] = "low";
+  write_json_file(copy / "models" / "writing.pt.json", sidecar);
+
+  const auto trial = scratch("damaged_line.json");
+  Json doc = {{"task", "writing"}, {"scenario", {{"word", "b-a-t---"}}}, {"points", Json::array()}};
+  for (int x = 0; x < 400; x += 2) doc["points"].push_back({x, 150});
+  write_json_file(trial, doc);
+  const auto out = scratch("damaged.json");
+  const Result r = run("diagnose --task writing --out " + out.string() + " " + trial.string(), "damaged",
+                       "SKILLCOACH_ASSET_DIR=" + copy.string());
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find((copy / "models" / "writing.pt.json").string()), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("without a noise floor"), std::string::npos) << r.output;
+  const Json d = read_json_file(out);
+  EXPECT_EQ(d.at("expertise_mode"), "quality-aware");
+  EXPECT_TRUE(d.at("noise_floor").is_null());
+  EXPECT_FALSE(d.at("targets").empty());
 }
 
 TEST(DiagnoseCommand, ParkingLearnerOnAPoolScenarioIsComparedWithThatExpert) {
