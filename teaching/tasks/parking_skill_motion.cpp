@@ -148,18 +148,37 @@ double separation(const Attribute& a, const std::vector<ParkingSkillMotion>& mot
   return gap;
 }
 
-// Appends to words[i] of each skill in `group` (2..4 skills) the graded words of the attribute that sets
-// them apart most.
+// Appends to words[i] of each skill in `group` (2..4 skills) the graded words of the attribute among
+// `candidates` (indices into attributes()) that sets them apart most.
 void grade(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions,
-           std::vector<std::size_t> group) {
+           std::vector<std::size_t> group, const std::vector<std::size_t>& candidates = {0, 1, 2}) {
   const auto& list = attributes();
-  std::size_t best = 0;
-  for (std::size_t a = 1; a < list.size(); ++a)
+  std::size_t best = candidates.front();
+  for (std::size_t a : candidates)
     if (separation(list[a], motions, group) > separation(list[best], motions, group)) best = a;
   const Attribute& a = list[best];
   std::stable_sort(group.begin(), group.end(),
                    [&](std::size_t x, std::size_t y) { return a.value(motions[x]) < a.value(motions[y]); });
   for (std::size_t k = 0; k < group.size(); ++k) words[group[k]] += ", " + a.words[group.size() - 2][k];
+}
+
+// More than four skills sharing words in one part of the manoeuvre (a model of one's own can have them): the
+// slower and the faster half, each told apart by how sharply it turns. Numbered only beyond eight.
+void split_by_speed_then_turn(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions,
+                              std::vector<std::size_t> members) {
+  const Attribute& speed = attributes()[0];
+  std::stable_sort(members.begin(), members.end(),
+                   [&](std::size_t x, std::size_t y) { return speed.value(motions[x]) < speed.value(motions[y]); });
+  const auto middle = members.begin() + static_cast<std::ptrdiff_t>(members.size() / 2);
+  const std::vector<std::size_t> halves[2] = {{members.begin(), middle}, {middle, members.end()}};
+  for (int h = 0; h < 2; ++h) {
+    for (std::size_t i : halves[h]) words[i] += h == 0 ? ", slowly" : ", quickly";
+    if (halves[h].size() > 4) {
+      for (std::size_t k = 0; k < halves[h].size(); ++k) words[halves[h][k]] += " (" + std::to_string(k + 1) + ")";
+    } else if (halves[h].size() >= 2) {
+      grade(words, motions, halves[h], {1});
+    }
+  }
 }
 
 void tell_apart(std::vector<std::string>& words, const std::vector<ParkingSkillMotion>& motions,
@@ -175,11 +194,10 @@ void tell_apart(std::vector<std::string>& words, const std::vector<ParkingSkillM
   for (std::size_t i : group) by_third[std::min(2, static_cast<int>(3.0 * motions[i].mean_progress))].push_back(i);
   for (auto& [third, members] : by_third) {
     for (std::size_t i : members) words[i] += ", " + thirds[static_cast<std::size_t>(third)];
-    if (members.size() <= 4) {
+    if (members.size() <= 4)
       tell_apart(words, motions, members);
-    } else {
-      for (std::size_t k = 0; k < members.size(); ++k) words[members[k]] += " (" + std::to_string(k + 1) + ")";
-    }
+    else
+      split_by_speed_then_turn(words, motions, members);
   }
 }
 

@@ -183,8 +183,24 @@ TEST(ParkingKit, SkillsSharingWordsAreToldApartByWhatDiffersMost) {
   const auto parts = describe_parking_motions({late, early});
   EXPECT_EQ(parts[0], "reversing while steering left, late in the manoeuvre");
   EXPECT_EQ(parts[1], "reversing while steering left, early in the manoeuvre");
-  for (const auto& w : {words, three, turns, parts})
-    for (const std::string& text : w) EXPECT_EQ(text.find("pace"), std::string::npos) << text;
+  // Five alike in one part of the drive (a model of one's own): slower and faster half, then how sharp.
+  std::vector<ParkingSkillMotion> five(5, gentle);
+  for (std::size_t k = 0; k < five.size(); ++k) {
+    five[k].mean_speed = -1.0 - static_cast<double>(k);
+    five[k].mean_abs_steering = 0.2 + 0.15 * static_cast<double>(k);
+    five[k].mean_progress = 0.5;
+  }
+  const auto alike = describe_parking_motions(five);
+  EXPECT_EQ(alike[0], "reversing while steering left, midway through the manoeuvre, slowly, with a gentle turn");
+  EXPECT_EQ(alike[1], "reversing while steering left, midway through the manoeuvre, slowly, with a sharp turn");
+  EXPECT_EQ(alike[2], "reversing while steering left, midway through the manoeuvre, quickly, with a gentle turn");
+  EXPECT_EQ(alike[4], "reversing while steering left, midway through the manoeuvre, quickly, with a sharp turn");
+  EXPECT_EQ(std::set<std::string>(alike.begin(), alike.end()).size(), alike.size());
+  for (const auto& w : {words, three, turns, parts, alike})
+    for (const std::string& text : w) {
+      EXPECT_EQ(text.find("pace"), std::string::npos) << text;
+      EXPECT_EQ(text.find('('), std::string::npos) << text;
+    }
 }
 
 TEST(ParkingKit, SkillWordsComeFromWhatTheSegmentsDo) {
