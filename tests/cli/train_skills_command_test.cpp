@@ -36,6 +36,21 @@ TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
   EXPECT_TRUE(s.at("git_revision").is_string());
 }
 
+// A config field that the sidecar writes only when it is off (encoder_reads_actions) is still a --set key;
+// an action-only mode cannot take it.
+TEST(TrainSkillsCommand, SetReachesFieldsWrittenOnlyWhenOff) {
+  const auto model = scratch_path("train_skills", "states_only.pt");
+  const std::string common = "train-skills --demos 5 --iterations 1 --seed 7 --set encoder_reads_actions=false ";
+  const auto r = run_skillcoach(common + "--task parking --out " + model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(read_json_file(model.string() + ".json").at("config").at("encoder_reads_actions"), false);
+  const auto writing = run_skillcoach(common + "--task writing --noise-floor-learners 0 --out " +
+                                      scratch_path("train_skills", "no_states.pt").string());
+  EXPECT_EQ(writing.exit_code, 2) << writing.output;
+  EXPECT_NE(writing.output.find("encoder_reads_actions=false needs a mode with states"), std::string::npos)
+      << writing.output;
+}
+
 TEST(TrainSkillsCommand, ProgressIsPlainLinesWhenStderrIsNotATerminal) {
   const auto model = scratch_path("train_skills", "progress.pt");
   const auto r = run_skillcoach(
