@@ -38,6 +38,7 @@
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
+#include "teaching/tasks/writing_cross_hand.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_noise_floor.hpp"
 #include "teaching/tasks/writing_planted_weakness.hpp"
@@ -138,13 +139,20 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
   std::fprintf(stderr, "evaluate-skills: %d classic words (seed %llu) by realistic learners...\n", args.count,
                static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
+  const ClassicDrawerGlyphs glyphs = ClassicDrawerGlyphs::load();
+  const std::vector<std::string> words = writing::classic_words(args.count, seed);
   const std::vector<WritingRobustnessRow> rows =
-      measure_writing_robustness(*extractor, ClassicDrawerGlyphs::load(), writing::classic_words(args.count, seed),
-                                 seed, writing_robustness_conditions());
+      measure_writing_robustness(*extractor, glyphs, words, seed, writing_robustness_conditions());
   std::printf("%s, %d words of seed %llu per condition (learner seeds Rng(%llu).fork(word)):\n\n%s",
               args.time_heuristic ? "time heuristic" : args.model.c_str(), args.count,
               static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed),
               robustness_table(rows).c_str());
+  const CrossHandConsistency training = cross_hand_consistency(*extractor, glyphs, words, seed, training_drawers());
+  const CrossHandConsistency unseen = cross_hand_consistency(*extractor, glyphs, words, seed, unseen_drawers());
+  std::printf(
+      "\ncross-hand consistency (no true boundaries; writing_cross_hand.hpp): drawers 1-10 %.3f, "
+      "unseen drawers 11-15 %.3f\n",
+      training.share(), unseen.share());
   std::fprintf(stderr, "evaluate-skills: %.1f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "teaching/expertise/trace_alignment.hpp"
-
 namespace sc {
 namespace {
 
@@ -33,6 +31,12 @@ std::vector<TracePoint3> in_frame(const std::vector<writing::TracePoint>& pts, c
 
 }  // namespace
 
+StepAlignment align_same_word(const std::vector<writing::TracePoint>& clean,
+                              const std::vector<writing::TracePoint>& copy) {
+  const Frame frame = frame_of(clean);
+  return align_traces(in_frame(clean, frame), in_frame(copy, frame));
+}
+
 CarriedBoundaries carried_boundaries(const WrittenWord& clean, const WrittenWord& copy,
                                      const std::vector<int>& clean_boundaries) {
   CarriedBoundaries out;
@@ -40,8 +44,7 @@ CarriedBoundaries carried_boundaries(const WrittenWord& clean, const WrittenWord
     out.kept.assign(clean_boundaries.size(), false);
     return out;
   }
-  const Frame frame = frame_of(clean.points);
-  const StepAlignment path = align_traces(in_frame(clean.points, frame), in_frame(copy.points, frame));
+  const StepAlignment path = align_same_word(clean.points, copy.points);
   const int last = static_cast<int>(copy.points.size()) - 1;
   for (int b : clean_boundaries) {
     const int at = aligned_span(path, b, b + 1).first;

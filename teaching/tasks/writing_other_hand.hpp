@@ -18,6 +18,7 @@
 // to within 5 % of the word: writing_other_hand_test.cpp measures the aligner.)
 #include <vector>
 
+#include "teaching/expertise/trace_alignment.hpp"
 #include "teaching/tasks/writing_realistic_learner.hpp"
 
 namespace sc {
@@ -28,5 +29,10 @@ struct CarriedBoundaries {
 };
 CarriedBoundaries carried_boundaries(const WrittenWord& clean, const WrittenWord& copy,
                                      const std::vector<int>& clean_boundaries);
+
+// The alignment carried_boundaries uses: (clean point, copy point) pairs of two non-empty traces of the same
+// word, both placed in the clean trace's frame.
+StepAlignment align_same_word(const std::vector<writing::TracePoint>& clean,
+                              const std::vector<writing::TracePoint>& copy);
 
 }  // namespace sc

@@ -1,0 +1,58 @@
+#include "teaching/tasks/writing_cross_hand.hpp"
+
+#include "engine/core/rng.hpp"
+#include "teaching/tasks/writing_execution.hpp"
+#include "teaching/tasks/writing_other_hand.hpp"
+#include "teaching/tasks/writing_steps.hpp"
+
+namespace sc {
+namespace {
+
+std::vector<writing::TracePoint> step_positions(const StepSequence& steps) {
+  std::vector<writing::TracePoint> out;
+  for (const TracePoint3& p : writing_trace_points(steps)) out.push_back({p[0], p[1], true});
+  return out;
+}
+
+std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
+  std::vector<int> out(static_cast<std::size_t>(length), -1);
+  for (const SkillSegment& s : segmentation.segments)
+    for (int t = std::max(s.begin, 0); t < s.end && t < length; ++t) out[static_cast<std::size_t>(t)] = s.skill;
+  return out;
+}
+
+}  // namespace
+
+CrossHandConsistency cross_hand_consistency(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
+                                            const std::vector<std::string>& words, std::uint64_t seed,
+                                            const std::vector<int>& drawers) {
+  RealisticHand other;
+  other.mouse = false;
+  other.drawer_pool = drawers;
+  std::vector<StepSequence> clean, copies;
+  const Rng root(seed);
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const auto kind = writing::AlphabetKind::Classic;
+    clean.push_back(writing_step_sequence(unsampled(written_word(glyphs, words[i])).trace, kind, words[i]));
+    copies.push_back(
+        writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace, kind, words[i]));
+  }
+  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean);
+  const std::vector<Segmentation> copy_skills = extractor.extract_all(copies);
+  CrossHandConsistency out;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (clean[i].length() == 0 || copies[i].length() == 0) continue;
+    const std::vector<int> want = skill_per_step(clean_skills[i], clean[i].length());
+    const std::vector<int> got = skill_per_step(copy_skills[i], copies[i].length());
+    const StepAlignment path = align_same_word(step_positions(clean[i]), step_positions(copies[i]));
+    for (int t = 0; t < clean[i].length(); ++t) {
+      const int j = aligned_span(path, t, t + 1).first;
+      ++out.steps;
+      out.agreeing +=
+          j >= 0 && j < copies[i].length() && want[static_cast<std::size_t>(t)] == got[static_cast<std::size_t>(j)];
+    }
+  }
+  return out;
+}
+
+}  // namespace sc

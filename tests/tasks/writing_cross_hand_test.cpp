@@ -1,0 +1,42 @@
+#include "teaching/tasks/writing_cross_hand.hpp"
+
+#include <gtest/gtest.h>
+
+#include "engine/core/asset_paths.hpp"
+#include "engine/writing/word_generator.hpp"
+#include "teaching/skills/compile_extractor.hpp"
+#include "teaching/skills/time_heuristic_extractor.hpp"
+
+namespace sc {
+namespace {
+
+const ClassicDrawerGlyphs& cross_hand_glyphs() {
+  static const ClassicDrawerGlyphs g = ClassicDrawerGlyphs::load();
+  return g;
+}
+
+TEST(WritingCrossHand, TheSameHandIsFullyConsistent) {
+  const TimeHeuristicExtractor slices(8);
+  const std::vector<std::string> words = writing::classic_words(5, 3);
+  const CrossHandConsistency same = cross_hand_consistency(slices, cross_hand_glyphs(), words, 3, {});
+  EXPECT_GT(same.steps, 0);
+  EXPECT_EQ(same.agreeing, same.steps);
+  const CrossHandConsistency other = cross_hand_consistency(slices, cross_hand_glyphs(), words, 3, training_drawers());
+  EXPECT_LT(other.share(), 1.0);
+}
+
+// Measured with 100 words at seeds 30 / 31 (docs/skills.md): the shipped model 0.839 / 0.847 on drawers 1-10,
+// a run of the same recipe at training seed 5 0.738 / 0.713, the model before copies by other hands 0.528 /
+// 0.496 - the order of their letter->skill agreement on unseen drawers, which needs true boundaries. On these
+// 20 words (seed 32), drawers 1-10 / 11-15: shipped 0.815 / 0.729, seed 5 0.700 / 0.520, before 0.475 / 0.446;
+// the bounds lie between the shipped model and the seed-5 run.
+TEST(WritingCrossHand, TheShippedModelKeepsOtherHandsOnTheCleanWordsSkills) {
+  const CompileExtractor model = CompileExtractor::load(asset_dir() / "models" / "writing.pt", "writing");
+  const std::vector<std::string> words = writing::classic_words(20, 32);
+  const double shipped = cross_hand_consistency(model, cross_hand_glyphs(), words, 32, training_drawers()).share();
+  EXPECT_GT(shipped, 0.76);
+  EXPECT_GT(cross_hand_consistency(model, cross_hand_glyphs(), words, 32, unseen_drawers()).share(), 0.65);
+}
+
+}  // namespace
+}  // namespace sc
