@@ -104,9 +104,10 @@ std::string other_drawer_lines(const PlantedWeaknessReport& report) {
   }
   char line[256];
   std::snprintf(line, sizeof line,
-                "other drawer's shape, by its clean shape score against the expert's letter (cut %.3f, the "
-                "noise floor): worse %d of %d found (%d letter-drawer pairs), within %d of %d (%d pairs)\n",
-                cut, found[0], n[0], pairs[0], found[1], n[1], pairs[1]);
+                "other drawer's shape, by its clean shape score against the expert's letter (cut %.3f, %s): "
+                "worse %d of %d found (%d letter-drawer pairs), within %d of %d (%d pairs)\n",
+                cut, report.noise_floor ? "the noise floor" : "no noise floor recorded", found[0], n[0], pairs[0],
+                found[1], n[1], pairs[1]);
   std::string out = line;
   out += "  letter, drawer (shape score): found / learners:";
   for (const auto& [key, cell] : report.other_drawers) {
