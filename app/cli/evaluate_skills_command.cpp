@@ -147,12 +147,12 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
               args.time_heuristic ? "time heuristic" : args.model.c_str(), args.count,
               static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed),
               robustness_table(rows).c_str());
-  const CrossHandConsistency training = cross_hand_consistency(*extractor, glyphs, words, seed, training_drawers());
-  const CrossHandConsistency unseen = cross_hand_consistency(*extractor, glyphs, words, seed, unseen_drawers());
+  const std::vector<CrossHandConsistency> cross =
+      cross_hand_consistency(*extractor, glyphs, words, seed, {training_drawers(), unseen_drawers()});
   std::printf(
       "\ncross-hand consistency (no true boundaries; writing_cross_hand.hpp): drawers 1-10 %.3f, "
       "unseen drawers 11-15 %.3f\n",
-      training.share(), unseen.share());
+      cross[0].share(), cross[1].share());
   std::fprintf(stderr, "evaluate-skills: %.1f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;

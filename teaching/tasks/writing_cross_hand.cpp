@@ -21,23 +21,19 @@ std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
   return out;
 }
 
-}  // namespace
-
-CrossHandConsistency cross_hand_consistency(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
-                                            const std::vector<std::string>& words, std::uint64_t seed,
-                                            const std::vector<int>& drawers) {
+// The copies of `words` by drawers of `drawers`, against the clean words' steps and skills.
+CrossHandConsistency consistency_with(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
+                                      const std::vector<std::string>& words, std::uint64_t seed,
+                                      const std::vector<int>& drawers, const std::vector<StepSequence>& clean,
+                                      const std::vector<Segmentation>& clean_skills) {
   RealisticHand other;
   other.mouse = false;
   other.drawer_pool = drawers;
-  std::vector<StepSequence> clean, copies;
+  std::vector<StepSequence> copies;
   const Rng root(seed);
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    const auto kind = writing::AlphabetKind::Classic;
-    clean.push_back(writing_step_sequence(unsampled(written_word(glyphs, words[i])).trace, kind, words[i]));
-    copies.push_back(
-        writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace, kind, words[i]));
-  }
-  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean);
+  for (std::size_t i = 0; i < words.size(); ++i)
+    copies.push_back(writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace,
+                                           writing::AlphabetKind::Classic, words[i]));
   const std::vector<Segmentation> copy_skills = extractor.extract_all(copies);
   CrossHandConsistency out;
   for (std::size_t i = 0; i < words.size(); ++i) {
@@ -52,6 +48,23 @@ CrossHandConsistency cross_hand_consistency(const SkillExtractor& extractor, con
           j >= 0 && j < copies[i].length() && want[static_cast<std::size_t>(t)] == got[static_cast<std::size_t>(j)];
     }
   }
+  return out;
+}
+
+}  // namespace
+
+std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& extractor,
+                                                         const ClassicDrawerGlyphs& glyphs,
+                                                         const std::vector<std::string>& words, std::uint64_t seed,
+                                                         const std::vector<std::vector<int>>& pools) {
+  std::vector<StepSequence> clean;
+  for (const std::string& word : words)
+    clean.push_back(
+        writing_step_sequence(unsampled(written_word(glyphs, word)).trace, writing::AlphabetKind::Classic, word));
+  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean);
+  std::vector<CrossHandConsistency> out;
+  for (const std::vector<int>& drawers : pools)
+    out.push_back(consistency_with(extractor, glyphs, words, seed, drawers, clean, clean_skills));
   return out;
 }
 

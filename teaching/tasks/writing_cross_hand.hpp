@@ -8,7 +8,7 @@
 // this measure knows only that both traces write the same word, as carried_boundaries does.
 //
 // Spec: word i is written cleanly by the paper's drawer and, unsampled and without noise, by drawers drawn per
-// letter from `drawers` (realistic_trace, seed Rng(seed).fork(i)); both become the skill model's step
+// letter from a pool `drawers` (realistic_trace, seed Rng(seed).fork(i)); both become the skill model's step
 // sequences and are segmented; their steps' pen positions are aligned with align_same_word. The consistency is
 // the share of the clean words' steps whose skill equals the skill of the first copy step aligned with it
 // (connectors included: the measure does not know where letters are).
@@ -27,8 +27,11 @@ struct CrossHandConsistency {
   double share() const { return steps > 0 ? static_cast<double>(agreeing) / steps : 0.0; }
 };
 
-CrossHandConsistency cross_hand_consistency(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
-                                            const std::vector<std::string>& words, std::uint64_t seed,
-                                            const std::vector<int>& drawers);
+// One result per drawer pool of `pools` (each as `drawers` in the spec): the clean words are written and
+// segmented once for all of them.
+std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& extractor,
+                                                         const ClassicDrawerGlyphs& glyphs,
+                                                         const std::vector<std::string>& words, std::uint64_t seed,
+                                                         const std::vector<std::vector<int>>& pools);
 
 }  // namespace sc
