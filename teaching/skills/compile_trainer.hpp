@@ -8,8 +8,8 @@
 // shipped models were arbitrary snapshots: reference-facts §3.6, §6.5, §6.10.)
 // With config.restarts > 1, that many runs (seeds seed, seed + 1, ...) train in parallel (one thread per
 // core, each run single-threaded) and one is kept by choose_restart (restart_choice.hpp): the lowest
-// validation NLL among the runs whose warm start separated its units; ties go to the lower seed. Without a
-// validation split the first such run is kept.
+// validation NLL (or the highest review score, review_restarts_with) among the runs whose warm start separated
+// its units; ties go to the lower seed. Without a validation split or score the first such run is kept.
 // With config.warm_start_iterations > 0 (and boundaries not fixed), each run first trains with the boundaries
 // fixed where the training data stop repeating (find_repeat_boundaries) and the boundary head supervised
 // towards them; the weights it leaves are the first candidate for "best" (best_iteration 0).
@@ -48,6 +48,7 @@ struct TrainingSummary {
   int restart = 0;                        // the run whose weights were kept (choose_restart)
   std::vector<double> restart_valid_nll;  // best validation NLL of every run (NaN without a valid split)
   std::vector<double> restart_unit_term;  // every run's warm_start_unit_term
+  std::vector<double> restart_score;      // every run's review score (review_restarts_with; empty without one)
   int iterations_run = 0;
   int best_iteration = 0;  // iteration whose weights were kept (0 = before the first: untrained, or as warm-started)
   double best_valid_nll = std::numeric_limits<double>::quiet_NaN();
@@ -90,6 +91,12 @@ class CompileTrainer {
   // its copies. Without them, train() finds the units itself by exact repetition in the training data.
   void warm_start_at(std::vector<std::vector<int>> train_boundaries, std::vector<std::vector<int>> units = {});
 
+  // After every restart has trained, `review` is called once per restart (in order, on train()'s thread) with
+  // its model and returns its score for choose_restart (higher is better; NaN: none): a measure the trainer
+  // cannot take itself, e.g. writing's cross-hand consistency (train-skills). It may also keep the model.
+  using RestartReview = std::function<double(const CompileModel& model, int restart)>;
+  void review_restarts_with(RestartReview review);
+
  private:
   CompileConfig config_;
   TrainingSummary summary_;
@@ -97,6 +104,7 @@ class CompileTrainer {
   bool fixed_ = false;
   std::vector<std::vector<int>> warm_given_, warm_units_given_;
   bool warm_given_set_ = false;
+  RestartReview review_;
 };
 
 }  // namespace sc

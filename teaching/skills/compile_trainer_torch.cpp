@@ -1,5 +1,6 @@
 // CompileTrainer: Adam on the relaxed CompILE loss, early stopping on the valid split, best weights kept;
-// several runs (restarts) in parallel, one kept (choose_restart: validation NLL, and the warm start's unit term).
+// several runs (restarts) in parallel, one kept (choose_restart: validation NLL or the caller's score, and the
+// warm start's unit term).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -21,27 +22,6 @@ namespace sc {
 using compile_detail::Batch;
 using compile_detail::CompileNetwork;
 
-Json TrainingSummary::to_json() const {
-  auto num = [](double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); };
-  auto nums = [&](const std::vector<double>& values) {
-    Json out = Json::array();
-    for (double v : values) out.push_back(num(v));
-    return out;
-  };
-  return Json{{"restart", restart},
-              {"restart_valid_nll", nums(restart_valid_nll)},
-              {"restart_unit_term", nums(restart_unit_term)},
-              {"iterations_run", iterations_run},
-              {"best_iteration", best_iteration},
-              {"best_valid_nll", num(best_valid_nll)},
-              {"final_loss", num(final_loss)},
-              {"seconds", seconds},
-              {"stopped_early", stopped_early},
-              {"warm_start_boundaries", num(warm_start_boundaries)},
-              {"warm_start_valid_nll", num(warm_start_valid_nll)},
-              {"warm_start_unit_term", num(warm_start_unit_term)}};
-}
-
 CompileTrainer::CompileTrainer(CompileConfig config) : config_(std::move(config)) {}
 
 void CompileTrainer::fix_boundaries(std::vector<std::vector<int>> train_boundaries,
@@ -50,6 +30,8 @@ void CompileTrainer::fix_boundaries(std::vector<std::vector<int>> train_boundari
   fixed_valid_ = std::move(valid_boundaries);
   fixed_ = true;
 }
+
+void CompileTrainer::review_restarts_with(RestartReview review) { review_ = std::move(review); }
 
 void CompileTrainer::warm_start_at(std::vector<std::vector<int>> train_boundaries,
                                    std::vector<std::vector<int>> units) {
@@ -404,8 +386,13 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   for (const auto& e : errors)
     if (e) std::rethrow_exception(e);
 
+  std::vector<CompileModel> models;
   std::vector<RestartOutcome> outcomes;
-  for (const RunResult& run : runs) outcomes.push_back({run.summary.best_valid_nll, run.summary.warm_start_unit_term});
+  for (RunResult& run : runs) {
+    models.emplace_back(std::move(run.impl));
+    outcomes.push_back({run.summary.best_valid_nll, run.summary.warm_start_unit_term});
+    if (review_) outcomes.back().score = review_(models.back(), static_cast<int>(models.size() - 1));
+  }
   const std::size_t kept = choose_restart(outcomes);
   summary_ = runs[kept].summary;
   summary_.restart = static_cast<int>(kept);
@@ -413,9 +400,10 @@ CompileModel CompileTrainer::train(const std::vector<StepSequence>& train, const
   for (const RestartOutcome& run : outcomes) {
     summary_.restart_valid_nll.push_back(run.valid_nll);
     summary_.restart_unit_term.push_back(run.unit_term);
+    if (review_) summary_.restart_score.push_back(run.score);
   }
   summary_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
-  return CompileModel(std::move(runs[kept].impl));
+  return std::move(models[kept]);
 }
 
 }  // namespace sc

@@ -15,10 +15,17 @@ std::size_t choose_restart(const std::vector<RestartOutcome>& runs) {
   auto candidate = [&](const RestartOutcome& run) {
     return !units || run.unit_term <= lowest_unit_term + kUnitTermSlack;
   };
+  bool scored = true;
+  for (const RestartOutcome& run : runs)
+    if (candidate(run)) scored = scored && std::isfinite(run.score);
+  auto better = [&](const RestartOutcome& a, const RestartOutcome& b) {
+    if (scored && a.score != b.score) return a.score > b.score;
+    return a.valid_nll < b.valid_nll;
+  };
   std::size_t kept = runs.size();
   for (std::size_t r = 0; r < runs.size(); ++r) {
     if (!candidate(runs[r])) continue;
-    if (kept == runs.size() || runs[r].valid_nll < runs[kept].valid_nll) kept = r;
+    if (kept == runs.size() || better(runs[r], runs[kept])) kept = r;
   }
   return kept;
 }

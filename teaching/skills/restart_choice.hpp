@@ -10,15 +10,21 @@
 //
 // Spec: a restart is a candidate when its warm start's unit term is within kUnitTermSlack of the lowest
 // restart's (every restart is a candidate when the term is NaN for any: no units); among candidates the
-// lowest validation NLL is kept, ties and NaN (no validation split) going to the lower index.
+// lowest validation NLL is kept, ties and NaN (no validation split) going to the lower index. When every
+// candidate has a score (RestartOutcome::score, higher is better: e.g. writing's cross-hand consistency,
+// writing_cross_hand.hpp), the highest score is kept instead, ties going to the lower NLL, then the lower index.
+// The score only ranks candidates: a restart that merged its units stays out however well it scores (a model
+// that gives every step one skill would be perfectly consistent).
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
 namespace sc {
 
 struct RestartOutcome {
-  double valid_nll;  // best validation NLL of the run (NaN without a validation split)
-  double unit_term;  // unit cross-entropy of the warm start's last pass, per trajectory (NaN: no units)
+  double valid_nll;    // best validation NLL of the run (NaN without a validation split)
+  double unit_term;    // unit cross-entropy of the warm start's last pass, per trajectory (NaN: no units)
+  double score = NAN;  // the caller's measure of the trained model, higher is better (NaN: not scored)
 };
 
 // Less than a merged pair of units costs (2.1-2.7 nats above the separated restarts, measured above).

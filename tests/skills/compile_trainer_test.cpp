@@ -136,6 +136,37 @@ TEST(CompileTrainer, RestartsKeepTheRunWithTheLowestValidationNll) {
   for (std::size_t i = 0; i < data.size(); ++i) EXPECT_EQ(interior_boundaries(sa[i]), interior_boundaries(sb[i])) << i;
 }
 
+// The review sees every restart's model, in order, and its score decides: the first, then the last run kept
+// (no unit term, so every run is a candidate), whichever the validation NLL prefers.
+TEST(CompileTrainer, AReviewScoresEveryRestartAndTheHighestScoreIsKept) {
+  const auto data = steps_of(constant_primitive_sequences(20, 3, 3, 4, 8, 0, 5));
+  const auto valid = steps_of(constant_primitive_sequences(8, 3, 3, 4, 8, 0, 6));
+  CompileConfig c = tiny_config();
+  c.iterations = 2;
+  c.eval_interval = 2;
+  c.batch_size = 8;
+  c.restarts = 3;
+  for (const double sign : {-1.0, 1.0}) {
+    std::vector<int> reviewed;
+    CompileTrainer trainer(c);
+    trainer.review_restarts_with([&](const CompileModel& model, int restart) {
+      reviewed.push_back(restart);
+      EXPECT_EQ(model.segment(valid).size(), valid.size());
+      return sign * restart;
+    });
+    trainer.train(data, valid);
+    EXPECT_EQ(reviewed, (std::vector<int>{0, 1, 2}));
+    const TrainingSummary& s = trainer.summary();
+    EXPECT_EQ(s.restart, sign > 0 ? 2 : 0);
+    EXPECT_EQ(s.restart_score, (std::vector<double>{0.0 * sign, 1.0 * sign, 2.0 * sign}));
+    EXPECT_EQ(s.best_valid_nll, s.restart_valid_nll[static_cast<std::size_t>(s.restart)]);
+    EXPECT_TRUE(s.to_json().contains("restart_score"));
+  }
+  CompileTrainer unreviewed(c);
+  unreviewed.train(data, valid);
+  EXPECT_FALSE(unreviewed.summary().to_json().contains("restart_score"));
+}
+
 TEST(CompileTrainer, SameSeedGivesSameModelBytes) {
   const auto data = steps_of(constant_primitive_sequences(20, 3, 3, 4, 8, 0, 5));
   CompileConfig c = tiny_config();
