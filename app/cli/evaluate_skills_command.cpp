@@ -150,9 +150,9 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
   const std::vector<CrossHandConsistency> cross =
       cross_hand_consistency(*extractor, glyphs, words, seed, {training_drawers(), unseen_drawers()});
   std::printf(
-      "\ncross-hand consistency (no true boundaries; writing_cross_hand.hpp): drawers 1-10 %.3f, "
-      "unseen drawers 11-15 %.3f\n",
-      cross[0].share(), cross[1].share());
+      "\ncross-hand consistency (no true boundaries; writing_cross_hand.hpp): drawers 1-10 %.3f (kappa %.3f), "
+      "unseen drawers 11-15 %.3f (kappa %.3f)\n",
+      cross[0].share(), cross[0].kappa(), cross[1].share(), cross[1].kappa());
   std::fprintf(stderr, "evaluate-skills: %.1f s\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return 0;

@@ -1,12 +1,15 @@
 #include "teaching/tasks/writing_cross_hand.hpp"
 
 #include "engine/core/rng.hpp"
+#include "engine/writing/word_generator.hpp"
 #include "teaching/tasks/writing_execution.hpp"
 #include "teaching/tasks/writing_other_hand.hpp"
 #include "teaching/tasks/writing_steps.hpp"
 
 namespace sc {
 namespace {
+
+constexpr int kNoStep = -2;  // a clean step the alignment pairs with no copy step (never a skill, nor -1)
 
 std::vector<writing::TracePoint> step_positions(const StepSequence& steps) {
   std::vector<writing::TracePoint> out;
@@ -43,9 +46,11 @@ CrossHandConsistency consistency_with(const SkillExtractor& extractor, const Cla
     const StepAlignment path = align_same_word(step_positions(clean[i]), step_positions(copies[i]));
     for (int t = 0; t < clean[i].length(); ++t) {
       const int j = aligned_span(path, t, t + 1).first;
+      const int copy_skill = j >= 0 && j < copies[i].length() ? got[static_cast<std::size_t>(j)] : kNoStep;
       ++out.steps;
-      out.agreeing +=
-          j >= 0 && j < copies[i].length() && want[static_cast<std::size_t>(t)] == got[static_cast<std::size_t>(j)];
+      out.agreeing += want[static_cast<std::size_t>(t)] == copy_skill;
+      ++out.clean_skills[want[static_cast<std::size_t>(t)]];
+      ++out.copy_skills[copy_skill];
     }
   }
   return out;
@@ -66,6 +71,35 @@ std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& e
   for (const std::vector<int>& drawers : pools)
     out.push_back(consistency_with(extractor, glyphs, words, seed, drawers, clean, clean_skills));
   return out;
+}
+
+double CrossHandConsistency::kappa() const {
+  if (steps == 0) return 0.0;
+  double chance = 0.0;
+  for (const auto& [skill, count] : clean_skills) {
+    const auto copy = copy_skills.find(skill);
+    if (copy != copy_skills.end()) chance += static_cast<double>(count) * copy->second;
+  }
+  chance /= static_cast<double>(steps) * steps;
+  return chance >= 1.0 ? 0.0 : (share() - chance) / (1.0 - chance);
+}
+
+std::string RestartCrossHandCheck::describe() const {
+  return "cross-hand consistency (kappa), drawers 1-10, " + std::to_string(words) + " classic words of seed " +
+         std::to_string(seed);
+}
+
+RestartCrossHandCheck restart_cross_hand_check(std::uint64_t training_seed, int words) {
+  RestartCrossHandCheck check;
+  check.words = words;
+  check.seed = Rng(training_seed).fork(kRestartCheckStream).next_u64();
+  return check;
+}
+
+double restart_cross_hand_score(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
+                                const RestartCrossHandCheck& check) {
+  const std::vector<std::string> words = writing::classic_words(check.words, check.seed);
+  return cross_hand_consistency(extractor, glyphs, words, check.seed, {training_drawers()}).front().kappa();
 }
 
 }  // namespace sc

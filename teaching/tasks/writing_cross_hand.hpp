@@ -13,6 +13,7 @@
 // the share of the clean words' steps whose skill equals the skill of the first copy step aligned with it
 // (connectors included: the measure does not know where letters are).
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,11 @@ namespace sc {
 struct CrossHandConsistency {
   int steps = 0;
   int agreeing = 0;
+  std::map<int, int> clean_skills, copy_skills;  // per skill: clean steps, and aligned copy steps, that have it
   double share() const { return steps > 0 ? static_cast<double>(agreeing) / steps : 0.0; }
+  // Cohen's kappa: the share beyond what the two skill frequencies give by chance. A model that gives every
+  // step one skill is perfectly consistent (share 1) and scores 0 here, so only kappa may choose a model.
+  double kappa() const;
 };
 
 // One result per drawer pool of `pools` (each as `drawers` in the spec): the clean words are written and
@@ -33,5 +38,18 @@ std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& e
                                                          const ClassicDrawerGlyphs& glyphs,
                                                          const std::vector<std::string>& words, std::uint64_t seed,
                                                          const std::vector<std::vector<int>>& pools);
+
+// The restart choice's check (train-skills for writing; restart_choice.hpp): consistency with drawers 1-10 only
+// (training's own hands, so the unseen drawers stay for measuring) on `words` classic words of
+// Rng(training seed).fork(kRestartCheckStream), a seed no table uses; the score is the consistency's kappa.
+struct RestartCrossHandCheck {
+  int words = 400;
+  std::uint64_t seed = 0;
+  std::string describe() const;  // for the model's sidecar
+};
+inline constexpr std::uint64_t kRestartCheckStream = 0x726573746172ULL;  // "restar"
+RestartCrossHandCheck restart_cross_hand_check(std::uint64_t training_seed, int words = RestartCrossHandCheck{}.words);
+double restart_cross_hand_score(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
+                                const RestartCrossHandCheck& check);
 
 }  // namespace sc

@@ -27,6 +27,32 @@ TEST(WritingCrossHand, TheSameHandIsFullyConsistent) {
   EXPECT_LT(other.share(), 1.0);
 }
 
+// A model that gives every step one skill agrees with any other hand, and is worth nothing: kappa says so.
+TEST(WritingCrossHand, KappaGivesNothingForAgreementThatOneSkillEverywhereMakes) {
+  const TimeHeuristicExtractor one_skill(1);
+  const std::vector<std::string> words = writing::classic_words(5, 3);
+  const CrossHandConsistency other =
+      cross_hand_consistency(one_skill, cross_hand_glyphs(), words, 3, {training_drawers()}).front();
+  EXPECT_EQ(other.agreeing, other.steps);
+  EXPECT_EQ(other.kappa(), 0.0);
+  const TimeHeuristicExtractor slices(8);
+  const CrossHandConsistency sliced =
+      cross_hand_consistency(slices, cross_hand_glyphs(), words, 3, {training_drawers()}).front();
+  EXPECT_GT(sliced.kappa(), 0.0);
+  EXPECT_LT(sliced.kappa(), sliced.share());
+}
+
+TEST(WritingCrossHand, KappaCountsTheChanceAgreementOfTheTwoSkillFrequencies) {
+  CrossHandConsistency c;
+  c.steps = 10;
+  c.agreeing = 7;
+  c.clean_skills = {{0, 5}, {1, 5}};
+  c.copy_skills = {{0, 4}, {1, 4}, {-2, 2}};
+  // chance = (5 * 4 + 5 * 4) / 100 = 0.4; kappa = (0.7 - 0.4) / 0.6.
+  EXPECT_DOUBLE_EQ(c.kappa(), 0.5);
+  EXPECT_EQ(CrossHandConsistency{}.kappa(), 0.0);
+}
+
 // Measured with 100 words at seeds 30 / 31 (docs/skills.md): the shipped model 0.839 / 0.847 on drawers 1-10,
 // a run of the same recipe at training seed 5 0.738 / 0.713, the model before copies by other hands 0.528 /
 // 0.496 - the order of their letter->skill agreement on unseen drawers, which needs true boundaries. On these
