@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_trainer.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
+#include "teaching/tasks/writing_cross_hand.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_noise_floor.hpp"
 
@@ -42,7 +44,40 @@ struct TrainArgs {
   int augment_other_hands = 0;                     // writing: copies by drawers 1-10, boundaries carried by alignment
   bool augment_keyed = false;                      // parking: one more copy per plan, keyboard keys on clean states
   int noise_floor_learners = kNoiseFloorLearners;  // writing: learners calibrating the recorded floor (0: none)
+  std::string restart_choice;                      // "nll" or "cross-hand"; empty: the task's (writing: cross-hand)
+  bool save_every_restart = false;                 // research: every restart's model as <out>.restart<k>.pt
+  int restart_check_words = RestartCrossHandCheck{}.words;  // words of the cross-hand check
 };
+
+// The check writes generated classic words, so it is the default only for models of them; the diagnostic
+// --fix-boundaries model is not for segmenting.
+bool chooses_by_cross_hand(const TrainArgs& args) {
+  if (args.restart_choice.empty()) return args.task == TaskKind::writing && args.data.empty() && !args.fix_boundaries;
+  return args.restart_choice == "cross-hand";
+}
+
+std::string restart_file(const std::string& out, int restart) {
+  return out + ".restart" + std::to_string(restart) + ".pt";
+}
+
+// Scores each restart's model for choose_restart (writing: cross-hand consistency, writing_cross_hand.hpp; only
+// when there are restarts to choose from) and, for research, saves it; an empty review when neither is wanted.
+CompileTrainer::RestartReview restart_review(const TrainArgs& args, const ModelProvenance& provenance, bool score) {
+  if (!score && !args.save_every_restart) return {};
+  auto glyphs = score ? std::make_shared<const ClassicDrawerGlyphs>(ClassicDrawerGlyphs::load()) : nullptr;
+  const RestartCrossHandCheck check = restart_cross_hand_check(args.seed, args.restart_check_words);
+  return [=](const CompileModel& model, int restart) {
+    double share = std::numeric_limits<double>::quiet_NaN();
+    if (score) {
+      // A non-owning pointer: the extractor lives only inside this call, the model outlives it.
+      const CompileExtractor extractor(std::shared_ptr<const CompileModel>(std::shared_ptr<void>(), &model));
+      share = restart_cross_hand_score(extractor, *glyphs, check);
+      std::fprintf(stderr, "restart %d: %s %.3f\n", restart, check.describe().c_str(), share);
+    }
+    if (args.save_every_restart) model.save(restart_file(args.out, restart), provenance);
+    return share;
+  };
+}
 
 // Applies `--set key=value` to the task's defaults through the config's JSON form, so every field has one
 // spelling (the sidecar's) and the usual range checks (CompileConfig::validate). Numbers are read as JSON.
@@ -114,6 +149,8 @@ int run(const TrainArgs& args) {
     throw InputError("--augment-mouse", "only for writing with --augment");
   if (args.augment_other_hands > 0 && (args.task != TaskKind::writing || args.augment == 0))
     throw InputError("--augment-other-hands", "only for writing with --augment");
+  if (chooses_by_cross_hand(args) && args.task != TaskKind::writing)
+    throw InputError("--restart-choice cross-hand", "only for writing");
   if (args.augment_keyed && (args.task != TaskKind::parking || args.augment == 0))
     throw InputError("--augment-keyed", "only for parking with --augment");
   if (args.augment > 0 && !args.data.empty())
@@ -135,18 +172,22 @@ int run(const TrainArgs& args) {
     trainer.fix_boundaries(split.train_boundaries, split.valid_boundaries);
   }
   if (!split.train_warm_boundaries.empty()) trainer.warm_start_at(split.train_warm_boundaries, split.train_warm_units);
-  TrainingProgressBar bar(stderr);
-  const CompileModel model = trainer.train(split.train, split.valid, [&](const TrainingProgress& p) { bar.update(p); });
-  bar.finish();
-  const TrainingSummary& summary = trainer.summary();
-
   ModelProvenance provenance;
   provenance.data_description = data.description + "; " + std::to_string(split.train.size()) + " train / " +
                                 std::to_string(split.valid.size()) + " validation (seed " + std::to_string(args.seed) +
                                 ")";
   if (args.fix_boundaries) provenance.data_description += "; DIAGNOSTIC: boundaries fixed at the true symbol edges";
   provenance.git_revision = git_revision();
+  const bool score_restarts = chooses_by_cross_hand(args) && config.restarts > 1;
+  trainer.review_restarts_with(restart_review(args, provenance, score_restarts));
+  TrainingProgressBar bar(stderr);
+  const CompileModel model = trainer.train(split.train, split.valid, [&](const TrainingProgress& p) { bar.update(p); });
+  bar.finish();
+  const TrainingSummary& summary = trainer.summary();
+
   provenance.metrics = summary.to_json();
+  if (score_restarts)
+    provenance.metrics["restart_score_kind"] = restart_cross_hand_check(args.seed, args.restart_check_words).describe();
   provenance.metrics["fixed_boundaries"] = args.fix_boundaries;
   // With fixed boundaries the boundary head never learned, so an error measured with its boundaries would
   // describe nothing; the validation NLL above (measured at the fixed boundaries) is the figure to read.
@@ -205,6 +246,18 @@ CommandRunner setup_train_skills(CLI::App& sub) {
                  "its sidecar (0: record none; docs/skills.md \"A fourth change: a noise floor\")")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
+  sub.add_option("--restart-choice", args->restart_choice,
+                 "Which restart to keep among those whose warm start separated its units: \"nll\" (lowest validation "
+                 "NLL) or \"cross-hand\" (writing: most consistent with the same words by drawers 1-10; "
+                 "docs/skills.md \"Choosing the restart by cross-hand consistency\"). Default: cross-hand for "
+                 "generated writing words, else nll")
+      ->check(CLI::IsMember({"nll", "cross-hand"}));
+  sub.add_option("--restart-check-words", args->restart_check_words,
+                 "Words the cross-hand check of --restart-choice writes (fewer: quicker, less sure)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  sub.add_flag("--save-every-restart", args->save_every_restart,
+               "Research: also write every restart's model as <out>.restart<k>.pt (plus its JSON sidecar)");
   sub.add_option("--out", args->out, "Model file to write (plus <file>.json)")->required();
   return [args] { return run(*args); };
 }

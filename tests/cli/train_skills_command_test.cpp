@@ -1,6 +1,10 @@
 // `skillcoach train-skills` end to end (tiny runs: a few demonstrations, one or two iterations).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
+#include "teaching/skills/restart_choice.hpp"
 #include "tests/cli/skills_cli_fixture.hpp"
 
 namespace sc {
@@ -12,12 +16,48 @@ using test::scratch_path;
 TEST(TrainSkillsCommand, SameSeedGivesTheSameModelBytesAndAnotherSeedDoesNot) {
   const auto a = scratch_path("train_skills", "a.pt"), b = scratch_path("train_skills", "b.pt"),
              c = scratch_path("train_skills", "c.pt");
-  const std::string common = "train-skills --task writing --demos 6 --iterations 2 --noise-floor-learners 0 ";
+  const std::string common =
+      "train-skills --task writing --demos 6 --iterations 2 --noise-floor-learners 0 --restart-choice nll ";
   ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + a.string()).exit_code, 0);
   ASSERT_EQ(run_skillcoach(common + "--seed 5 --out " + b.string()).exit_code, 0);
   ASSERT_EQ(run_skillcoach(common + "--seed 6 --out " + c.string()).exit_code, 0);
   EXPECT_EQ(test::read_bytes(a), test::read_bytes(b));
   EXPECT_NE(test::read_bytes(a), test::read_bytes(c));
+  EXPECT_FALSE(read_json_file(a.string() + ".json").at("metrics").contains("restart_score"));
+  EXPECT_FALSE(std::filesystem::exists(a.string() + ".restart0.pt"));
+}
+
+// Generated writing words keep, by default, the restart choose_restart picks with the cross-hand check's kappa,
+// recorded with how it was measured; --save-every-restart writes each run's model, the kept one byte for byte.
+TEST(TrainSkillsCommand, WritingKeepsTheRestartMostConsistentWithOtherHands) {
+  const auto model = scratch_path("train_skills", "cross_hand.pt");
+  const auto r = run_skillcoach(
+      "train-skills --task writing --demos 6 --iterations 2 --noise-floor-learners 0 --seed 0 --save-every-restart "
+      "--restart-check-words 20 --out " +
+      model.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json metrics = read_json_file(model.string() + ".json").at("metrics");
+  std::vector<RestartOutcome> outcomes;
+  for (int k = 0; k < 2; ++k) {
+    const double score = metrics.at("restart_score").at(k).get<double>();
+    EXPECT_TRUE(score >= -1.0 && score <= 1.0) << metrics;
+    outcomes.push_back({metrics.at("restart_valid_nll").at(k).get<double>(), NAN, score});
+  }
+  const int kept = metrics.at("restart").get<int>();
+  EXPECT_EQ(kept, static_cast<int>(choose_restart(outcomes))) << metrics;
+  EXPECT_NE(metrics.at("restart_score_kind").get<std::string>().find("drawers 1-10, 20 classic words"),
+            std::string::npos);
+  const std::string restart = model.string() + ".restart";
+  EXPECT_EQ(test::read_bytes(restart + std::to_string(kept) + ".pt"), test::read_bytes(model));
+  EXPECT_NE(test::read_bytes(restart + std::to_string(1 - kept) + ".pt"), test::read_bytes(model));
+}
+
+TEST(TrainSkillsCommand, RestartChoiceByOtherHandsIsOnlyForWriting) {
+  const auto r =
+      run_skillcoach("train-skills --task parking --demos 5 --iterations 1 --restart-choice cross-hand --out " +
+                     scratch_path("train_skills", "cross_parking.pt").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("only for writing"), std::string::npos) << r.output;
 }
 
 TEST(TrainSkillsCommand, SidecarRecordsConfigDataSeedMetricsAndRevision) {
@@ -54,7 +94,9 @@ TEST(TrainSkillsCommand, SetReachesFieldsWrittenOnlyWhenOff) {
 TEST(TrainSkillsCommand, ProgressIsPlainLinesWhenStderrIsNotATerminal) {
   const auto model = scratch_path("train_skills", "progress.pt");
   const auto r = run_skillcoach(
-      "train-skills --task writing --demos 6 --iterations 3 --seed 1 --noise-floor-learners 0 --out " + model.string());
+      "train-skills --task writing --demos 6 --iterations 3 --seed 1 --noise-floor-learners 0 --restart-choice nll "
+      "--out " +
+      model.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find('\r'), std::string::npos);
   EXPECT_NE(r.output.find("it 1/3  loss"), std::string::npos) << r.output;
