@@ -1,8 +1,10 @@
 #include "engine/review_view/review_chart.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "engine/review_view/review_palette.hpp"
 
@@ -20,16 +22,30 @@ std::string number(double v) {
   return text;
 }
 
-float row_height(const ExpertiseChart& chart, float scale, float bar) {
-  return ImGui::GetFontSize() + 6.0f * scale + bar * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size())) +
-         12.0f * scale;
+std::string skill_title(const ChartSkill& s) { return "skill " + std::to_string(s.skill) + ": " + s.label; }
+
+// Skill names of models one trains oneself run to ~85 characters: a title wraps within the chart, never clips.
+float title_wrap_width(float chart_width, float scale) {
+  return std::max(1.0f, chart_width - 28.0f * scale - ImGui::GetFontSize() * 1.1f);
+}
+
+float title_height(ImFont* bold, float wrap, const ChartSkill& s) {
+  ImFont* font = bold ? bold : ImGui::GetFont();
+  return font->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, skill_title(s).c_str()).y;
+}
+
+float titles_height(const ExpertiseChart& chart, ImFont* bold, float wrap) {
+  float sum = 0.0f;
+  for (const ChartSkill& s : chart.skills) sum += title_height(bold, wrap, s);
+  return sum;
 }
 
 }  // namespace
 
-float expertise_chart_height(const ExpertiseChart& chart, float scale) {
-  return ImGui::GetFontSize() * 3.5f +
-         row_height(chart, scale, 14.0f * scale) * static_cast<float>(chart.skills.size()) + 8.0f * scale;
+float expertise_chart_height(const ExpertiseChart& chart, float scale, float width, ImFont* bold) {
+  const float bars = 14.0f * scale * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
+  return ImGui::GetFontSize() * 3.5f + titles_height(chart, bold, title_wrap_width(width, scale)) +
+         (18.0f * scale + bars) * static_cast<float>(chart.skills.size()) + 8.0f * scale;
 }
 
 void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const ExpertiseChart& chart, float scale,
@@ -40,7 +56,8 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   const float pad = 14.0f * scale;
   const float rows = static_cast<float>(std::max<std::size_t>(1, chart.skills.size()));
   const float bars = rows * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
-  const float fixed = fs * 3.5f + rows * (fs + 18.0f * scale) + pad;
+  const float wrap = title_wrap_width(size.x, scale);
+  const float fixed = fs * 3.5f + titles_height(chart, bold, wrap) + rows * 18.0f * scale + pad;
   const float bar = std::clamp((size.y - fixed) / bars, 14.0f * scale, 40.0f * scale);
   dl.AddRectFilled(p, {p.x + size.x, p.y + std::min(size.y, fixed + bars * bar + pad)}, kPanel, 8.0f * scale);
   const float left = p.x + pad, right = p.x + size.x - pad - 150.0f * scale;  // room for "-0.28   drilled"
@@ -62,9 +79,8 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   const double full = chart.lowest < 0.0 ? -chart.lowest : 1.0;
   for (const ChartSkill& s : chart.skills) {
     dl.AddRectFilled({left, y + fs * 0.15f}, {left + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(s.skill), 3.0f);
-    const std::string title = "skill " + std::to_string(s.skill) + ": " + s.label;
-    dl.AddText(bold, fs, {left + fs * 1.1f, y}, kText, title.c_str());
-    y += fs + 6.0f * scale;
+    dl.AddText(bold ? bold : ImGui::GetFont(), fs, {left + fs * 1.1f, y}, kText, skill_title(s).c_str(), nullptr, wrap);
+    y += title_height(bold, wrap, s) + 6.0f * scale;
     dl.AddLine({left, y - 2.0f * scale}, {left, y + bar * static_cast<float>(s.values.size())}, kGrid, 1.0f);
     for (std::size_t r = 0; r < s.values.size(); ++r) {
       const float a = 0.45f + 0.55f * static_cast<float>(r + 1) / static_cast<float>(s.values.size());

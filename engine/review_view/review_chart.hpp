@@ -31,8 +31,9 @@ struct RewardPlot {
   std::string caption;             // e.g. "reward after each control step"
 };
 
-// The height the chart needs at `scale` (1 at 720 px), to size a scroll region or an image.
-float expertise_chart_height(const ExpertiseChart& chart, float scale);
+// The height the chart needs at `scale` (1 at 720 px) and `width` (skill titles wrap within it; `bold` is the
+// font they are drawn in), to size a scroll region or an image.
+float expertise_chart_height(const ExpertiseChart& chart, float scale, float width, ImFont* bold);
 void draw_expertise_chart(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertiseChart& chart, float scale,
                           ImFont* bold);
 void draw_reward_plot(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const RewardPlot& plot, float scale);

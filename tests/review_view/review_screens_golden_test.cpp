@@ -1,6 +1,6 @@
-// Golden screenshots of the Review mode's session browser and trial viewer, rendered by the real program
-// offscreen (`skillcoach screenshot`): the trainer's deterministic screenshot session (fixed seed,
-// timestamps and scripted learner) is the database they show.
+// Golden screenshots of the Review mode's session browser, trial viewer and expertise page, rendered by the real
+// program offscreen (`skillcoach screenshot`): the trainer's deterministic screenshot session (fixed seed, timestamps
+// and scripted learner) is the database they show.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -23,7 +23,7 @@ TEST_P(ReviewScreenGolden, MatchesGolden) {
   EXPECT_TRUE(matches_golden(read_png(out), "review/screen_" + screen));
 }
 
-INSTANTIATE_TEST_SUITE_P(Review, ReviewScreenGolden, ::testing::Values("review", "review_trial"));
+INSTANTIATE_TEST_SUITE_P(Review, ReviewScreenGolden, ::testing::Values("review", "review_trial", "review_expertise"));
 
 }  // namespace
 }  // namespace sc::test

@@ -220,11 +220,14 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   ImGui::PushFont(ui.fonts.bold);
   ImGui::TextUnformatted("Expertise per skill across rounds (stored diagnoses)");
   ImGui::PopFont();
+  ImGui::PushTextWrapPos(0.0f);
   for (const std::string& line : model.practice_lines()) ImGui::TextDisabled("%s", line.c_str());
+  ImGui::PopTextWrapPos();
   if (const auto* chart = model.expertise_chart(); chart && !chart->skills.empty()) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    const ImVec2 size(ImGui::GetContentRegionAvail().x, std::max(ImGui::GetContentRegionAvail().y - 8 * s,
-                                                                 review_view::expertise_chart_height(*chart, s)));
+    const float width = ImGui::GetContentRegionAvail().x;
+    const ImVec2 size(width, std::max(ImGui::GetContentRegionAvail().y - 8 * s,
+                                      review_view::expertise_chart_height(*chart, s, width, ui.fonts.bold)));
     review_view::draw_expertise_chart(*ImGui::GetWindowDrawList(), at, size, *chart, s, ui.fonts.bold);
     ImGui::Dummy(size);
   } else {
@@ -262,7 +265,8 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       ImGui::PushFont(ui.fonts.bold);
       ImGui::Text("skill %d: %s", skill.skill, skill.description.c_str());
       ImGui::PopFont();
-      ImGui::Text("E = %.3f, used %d times by the expert", skill.expertise, skill.occurrences);
+      ImGui::Text("E = %.3f, used %d time%s by the expert", skill.expertise, skill.occurrences,
+                  skill.occurrences == 1 ? "" : "s");
       if (skill.missed.empty()) ImGui::TextDisabled("Never missed (a target by rank among equals).");
       for (const auto& m : skill.missed) {
         ImGui::Bullet();
