@@ -71,6 +71,8 @@ CompileTrainer::RestartReview restart_review(const TrainArgs& args, const ModelP
     if (score) {
       // A non-owning pointer: the extractor lives only inside this call, the model outlives it.
       const CompileExtractor extractor(std::shared_ptr<const CompileModel>(std::shared_ptr<void>(), &model));
+      std::fprintf(stderr, "restart %d: writing %d words by other hands to check its skills (400: ~20 s)...\n", restart,
+                   check.words);
       share = restart_cross_hand_score(extractor, *glyphs, check);
       std::fprintf(stderr, "restart %d: %s %.3f\n", restart, check.describe().c_str(), share);
     }
