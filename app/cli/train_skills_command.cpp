@@ -1,7 +1,8 @@
 // skillcoach train-skills --task parking|writing [--data DIR] [--iterations N] [--seed S] [--set K=V] --out FILE:
 // trains the task's CompILE model at the paper's defaults (CompileConfig::defaults_for) on the expert's
 // demonstrations (generated when no --data is given), holding out 10 % for early stopping, and writes the
-// model file plus its JSON sidecar (for writing with the noise floor calibrated with the model). Same seed
+// model file plus its JSON sidecar (for writing with the noise floor calibrated with the model; generated writing
+// words keep the restart whose skills agree most with the same words by other hands). Same seed
 // and data on the same machine -> the same model bytes.
 #include <CLI/CLI.hpp>
 
@@ -67,17 +68,17 @@ CompileTrainer::RestartReview restart_review(const TrainArgs& args, const ModelP
   auto glyphs = score ? std::make_shared<const ClassicDrawerGlyphs>(ClassicDrawerGlyphs::load()) : nullptr;
   const RestartCrossHandCheck check = restart_cross_hand_check(args.seed, args.restart_check_words);
   return [=](const CompileModel& model, int restart) {
-    double share = std::numeric_limits<double>::quiet_NaN();
+    double kappa = std::numeric_limits<double>::quiet_NaN();
     if (score) {
       // A non-owning pointer: the extractor lives only inside this call, the model outlives it.
       const CompileExtractor extractor(std::shared_ptr<const CompileModel>(std::shared_ptr<void>(), &model));
       std::fprintf(stderr, "restart %d: writing %d words by other hands to check its skills (400: ~20 s)...\n", restart,
                    check.words);
-      share = restart_cross_hand_score(extractor, *glyphs, check);
-      std::fprintf(stderr, "restart %d: %s %.3f\n", restart, check.describe().c_str(), share);
+      kappa = restart_cross_hand_score(extractor, *glyphs, check);
+      std::fprintf(stderr, "restart %d: %s %.3f\n", restart, check.describe().c_str(), kappa);
     }
     if (args.save_every_restart) model.save(restart_file(args.out, restart), provenance);
-    return share;
+    return kappa;
   };
 }
 
