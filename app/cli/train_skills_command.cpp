@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,16 +66,17 @@ std::string restart_file(const std::string& out, int restart) {
 // when there are restarts to choose from) and, for research, saves it; an empty review when neither is wanted.
 CompileTrainer::RestartReview restart_review(const TrainArgs& args, const ModelProvenance& provenance, bool score) {
   if (!score && !args.save_every_restart) return {};
-  auto glyphs = score ? std::make_shared<const ClassicDrawerGlyphs>(ClassicDrawerGlyphs::load()) : nullptr;
   const RestartCrossHandCheck check = restart_cross_hand_check(args.seed, args.restart_check_words);
+  // Written and aligned once, on the first restart's review; every restart is only segmented on them.
+  auto words = std::make_shared<std::optional<CrossHandWords>>();
   return [=](const CompileModel& model, int restart) {
     double kappa = std::numeric_limits<double>::quiet_NaN();
     if (score) {
       // A non-owning pointer: the extractor lives only inside this call, the model outlives it.
       const CompileExtractor extractor(std::shared_ptr<const CompileModel>(std::shared_ptr<void>(), &model));
-      std::fprintf(stderr, "restart %d: writing %d words by other hands to check its skills (400: ~20 s)...\n", restart,
-                   check.words);
-      kappa = restart_cross_hand_score(extractor, *glyphs, check);
+      std::fprintf(stderr, "restart %d: checking its skills on %d words by other hands...\n", restart, check.words);
+      if (!*words) words->emplace(restart_check_words(ClassicDrawerGlyphs::load(), check));
+      kappa = restart_cross_hand_score(extractor, **words);
       std::fprintf(stderr, "restart %d: %s %.3f\n", restart, check.describe().c_str(), kappa);
     }
     if (args.save_every_restart) model.save(restart_file(args.out, restart), provenance);

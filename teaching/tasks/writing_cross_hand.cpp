@@ -24,53 +24,58 @@ std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
   return out;
 }
 
-// The copies of `words` by drawers of `drawers`, against the clean words' steps and skills.
-CrossHandConsistency consistency_with(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
-                                      const std::vector<std::string>& words, std::uint64_t seed,
-                                      const std::vector<int>& drawers, const std::vector<StepSequence>& clean,
-                                      const std::vector<Segmentation>& clean_skills) {
-  RealisticHand other;
-  other.mouse = false;
-  other.drawer_pool = drawers;
-  std::vector<StepSequence> copies;
+}  // namespace
+
+CrossHandWords::CrossHandWords(const ClassicDrawerGlyphs& glyphs, const std::vector<std::string>& words,
+                               std::uint64_t seed, const std::vector<std::vector<int>>& pools) {
+  for (const std::string& word : words)
+    clean_.push_back(
+        writing_step_sequence(unsampled(written_word(glyphs, word)).trace, writing::AlphabetKind::Classic, word));
   const Rng root(seed);
-  for (std::size_t i = 0; i < words.size(); ++i)
-    copies.push_back(writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace,
-                                           writing::AlphabetKind::Classic, words[i]));
-  const std::vector<Segmentation> copy_skills = extractor.extract_all(copies);
-  CrossHandConsistency out;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    if (clean[i].length() == 0 || copies[i].length() == 0) continue;
-    const std::vector<int> want = skill_per_step(clean_skills[i], clean[i].length());
-    const std::vector<int> got = skill_per_step(copy_skills[i], copies[i].length());
-    const StepAlignment path = align_same_word(step_positions(clean[i]), step_positions(copies[i]));
-    for (int t = 0; t < clean[i].length(); ++t) {
-      const int j = aligned_span(path, t, t + 1).first;
-      const int copy_skill = j >= 0 && j < copies[i].length() ? got[static_cast<std::size_t>(j)] : kNoStep;
-      ++out.steps;
-      out.agreeing += want[static_cast<std::size_t>(t)] == copy_skill;
-      ++out.clean_skills[want[static_cast<std::size_t>(t)]];
-      ++out.copy_skills[copy_skill];
+  for (const std::vector<int>& drawers : pools) {
+    RealisticHand other;
+    other.mouse = false;
+    other.drawer_pool = drawers;
+    Pool pool;
+    for (std::size_t i = 0; i < words.size(); ++i) {
+      pool.copies.push_back(
+          writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace,
+                                writing::AlphabetKind::Classic, words[i]));
+      pool.paths.push_back(align_same_word(step_positions(clean_[i]), step_positions(pool.copies[i])));
     }
+    pools_.push_back(std::move(pool));
+  }
+}
+
+std::vector<CrossHandConsistency> CrossHandWords::measure(const SkillExtractor& extractor) const {
+  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean_);
+  std::vector<CrossHandConsistency> out;
+  for (const Pool& pool : pools_) {
+    const std::vector<Segmentation> copy_skills = extractor.extract_all(pool.copies);
+    CrossHandConsistency c;
+    for (std::size_t i = 0; i < clean_.size(); ++i) {
+      if (clean_[i].length() == 0 || pool.copies[i].length() == 0) continue;
+      const std::vector<int> want = skill_per_step(clean_skills[i], clean_[i].length());
+      const std::vector<int> got = skill_per_step(copy_skills[i], pool.copies[i].length());
+      for (int t = 0; t < clean_[i].length(); ++t) {
+        const int j = aligned_span(pool.paths[i], t, t + 1).first;
+        const int copy_skill = j >= 0 && j < pool.copies[i].length() ? got[static_cast<std::size_t>(j)] : kNoStep;
+        ++c.steps;
+        c.agreeing += want[static_cast<std::size_t>(t)] == copy_skill;
+        ++c.clean_skills[want[static_cast<std::size_t>(t)]];
+        ++c.copy_skills[copy_skill];
+      }
+    }
+    out.push_back(std::move(c));
   }
   return out;
 }
-
-}  // namespace
 
 std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& extractor,
                                                          const ClassicDrawerGlyphs& glyphs,
                                                          const std::vector<std::string>& words, std::uint64_t seed,
                                                          const std::vector<std::vector<int>>& pools) {
-  std::vector<StepSequence> clean;
-  for (const std::string& word : words)
-    clean.push_back(
-        writing_step_sequence(unsampled(written_word(glyphs, word)).trace, writing::AlphabetKind::Classic, word));
-  const std::vector<Segmentation> clean_skills = extractor.extract_all(clean);
-  std::vector<CrossHandConsistency> out;
-  for (const std::vector<int>& drawers : pools)
-    out.push_back(consistency_with(extractor, glyphs, words, seed, drawers, clean, clean_skills));
-  return out;
+  return CrossHandWords(glyphs, words, seed, pools).measure(extractor);
 }
 
 double CrossHandConsistency::kappa() const {
@@ -96,10 +101,12 @@ RestartCrossHandCheck restart_cross_hand_check(std::uint64_t training_seed, int 
   return check;
 }
 
-double restart_cross_hand_score(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
-                                const RestartCrossHandCheck& check) {
-  const std::vector<std::string> words = writing::classic_words(check.words, check.seed);
-  return cross_hand_consistency(extractor, glyphs, words, check.seed, {training_drawers()}).front().kappa();
+CrossHandWords restart_check_words(const ClassicDrawerGlyphs& glyphs, const RestartCrossHandCheck& check) {
+  return CrossHandWords(glyphs, writing::classic_words(check.words, check.seed), check.seed, {training_drawers()});
+}
+
+double restart_cross_hand_score(const SkillExtractor& extractor, const CrossHandWords& check_words) {
+  return check_words.measure(extractor).front().kappa();
 }
 
 }  // namespace sc

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "teaching/skills/skill_extractor.hpp"
+#include "teaching/tasks/writing_other_hand.hpp"
 #include "teaching/tasks/writing_realistic_learner.hpp"
 
 namespace sc {
@@ -32,8 +33,25 @@ struct CrossHandConsistency {
   double kappa() const;
 };
 
-// One result per drawer pool of `pools` (each as `drawers` in the spec): the clean words are written and
-// segmented once for all of them.
+// The check's traces, written and aligned once (the alignment is most of the cost and needs no model), so
+// several models - a training's restarts - are measured on them by segmenting only. One pool per entry of
+// `pools` (each as `drawers` in the spec); measure() gives one result per pool.
+class CrossHandWords {
+ public:
+  CrossHandWords(const ClassicDrawerGlyphs& glyphs, const std::vector<std::string>& words, std::uint64_t seed,
+                 const std::vector<std::vector<int>>& pools);
+  std::vector<CrossHandConsistency> measure(const SkillExtractor& extractor) const;
+
+ private:
+  struct Pool {
+    std::vector<StepSequence> copies;
+    std::vector<StepAlignment> paths;  // clean word i's steps -> copy i's (align_same_word)
+  };
+  std::vector<StepSequence> clean_;
+  std::vector<Pool> pools_;
+};
+
+// CrossHandWords(glyphs, words, seed, pools).measure(extractor).
 std::vector<CrossHandConsistency> cross_hand_consistency(const SkillExtractor& extractor,
                                                          const ClassicDrawerGlyphs& glyphs,
                                                          const std::vector<std::string>& words, std::uint64_t seed,
@@ -49,7 +67,7 @@ struct RestartCrossHandCheck {
 };
 inline constexpr std::uint64_t kRestartCheckStream = 0x726573746172ULL;  // "restar"
 RestartCrossHandCheck restart_cross_hand_check(std::uint64_t training_seed, int words = RestartCrossHandCheck{}.words);
-double restart_cross_hand_score(const SkillExtractor& extractor, const ClassicDrawerGlyphs& glyphs,
-                                const RestartCrossHandCheck& check);
+CrossHandWords restart_check_words(const ClassicDrawerGlyphs& glyphs, const RestartCrossHandCheck& check);
+double restart_cross_hand_score(const SkillExtractor& extractor, const CrossHandWords& check_words);  // kappa
 
 }  // namespace sc
