@@ -29,9 +29,10 @@ float title_wrap_width(float chart_width, float scale) {
   return std::max(1.0f, chart_width - 28.0f * scale - ImGui::GetFontSize() * 1.1f);
 }
 
+ImFont* title_font(ImFont* bold) { return bold ? bold : ImGui::GetFont(); }
+
 float title_height(ImFont* bold, float wrap, const ChartSkill& s) {
-  ImFont* font = bold ? bold : ImGui::GetFont();
-  return font->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, skill_title(s).c_str()).y;
+  return title_font(bold)->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, skill_title(s).c_str()).y;
 }
 
 float titles_height(const ExpertiseChart& chart, ImFont* bold, float wrap) {
@@ -79,7 +80,7 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   const double full = chart.lowest < 0.0 ? -chart.lowest : 1.0;
   for (const ChartSkill& s : chart.skills) {
     dl.AddRectFilled({left, y + fs * 0.15f}, {left + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(s.skill), 3.0f);
-    dl.AddText(bold ? bold : ImGui::GetFont(), fs, {left + fs * 1.1f, y}, kText, skill_title(s).c_str(), nullptr, wrap);
+    dl.AddText(title_font(bold), fs, {left + fs * 1.1f, y}, kText, skill_title(s).c_str(), nullptr, wrap);
     y += title_height(bold, wrap, s) + 6.0f * scale;
     dl.AddLine({left, y - 2.0f * scale}, {left, y + bar * static_cast<float>(s.values.size())}, kGrid, 1.0f);
     for (std::size_t r = 0; r < s.values.size(); ++r) {
