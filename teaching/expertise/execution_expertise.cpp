@@ -14,13 +14,55 @@ namespace {
 // waived[t][k]: Alg. 2's "missing" of trial t's k-th expert segment is not charged (see the header).
 using Waivers = std::vector<std::vector<bool>>;
 
-void check(const ExecutionTrial& t, std::size_t index) {
+void check_reward(double reward, const std::string& where) {
+  if (!std::isfinite(reward) || reward > 0.0)
+    throw InputError(where, "execution reward " + std::to_string(reward) + " must be finite and <= 0");
+}
+
+void check(const ExecutionTrial& t, std::size_t index, std::size_t references) {
   const std::string where = "expertise trial " + std::to_string(index);
   if (t.segments.size() != t.trial.expert.segments.size())
     throw InputError(where, "execution scores must be given for each of the expert's segments");
-  for (const SegmentExecution& s : t.segments)
-    if (!std::isfinite(s.reward) || s.reward > 0.0)
-      throw InputError(where, "execution reward " + std::to_string(s.reward) + " must be finite and <= 0");
+  for (const SegmentExecution& s : t.segments) {
+    check_reward(s.reward, where);
+    if (s.reference_rewards.size() != references)
+      throw InputError(where,
+                       "every segment must be scored against the same " + std::to_string(references) + " references");
+    for (double r : s.reference_rewards) check_reward(r, where);
+  }
+}
+
+std::size_t reference_count(const std::vector<ExecutionTrial>& trials) {
+  for (const ExecutionTrial& t : trials)
+    if (!t.segments.empty()) return t.segments.front().reference_rewards.size();
+  return 0;
+}
+
+// The references whose scores have the highest means over every segment, at most kLearnerHands of them, each
+// above the expert's own; best first.
+std::vector<int> learners_hands(const std::vector<ExecutionTrial>& trials, std::size_t references) {
+  std::vector<double> sums(references, 0.0);
+  double expert = 0.0;
+  for (const ExecutionTrial& t : trials)
+    for (const SegmentExecution& s : t.segments) {
+      expert += s.reward;
+      for (std::size_t r = 0; r < references; ++r) sums[r] += s.reference_rewards[r];
+    }
+  std::vector<int> order(references);
+  for (std::size_t r = 0; r < references; ++r) order[r] = static_cast<int>(r);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sums[a] > sums[b]; });
+  std::vector<int> out;
+  for (int r : order)
+    if (static_cast<int>(out.size()) < kLearnerHands && sums[static_cast<std::size_t>(r)] > expert) out.push_back(r);
+  return out;
+}
+
+// Each segment's reward against the expert or the learner's hands, whichever is closest.
+std::vector<ExecutionTrial> in_learners_hand(std::vector<ExecutionTrial> trials, const std::vector<int>& hands) {
+  for (ExecutionTrial& t : trials)
+    for (SegmentExecution& s : t.segments)
+      for (int r : hands) s.reward = std::max(s.reward, s.reference_rewards[static_cast<std::size_t>(r)]);
+  return trials;
 }
 
 // The largest penalty of `skill` over the trials, with where it happened.
@@ -134,17 +176,20 @@ const char* target_reason_words(TargetReason reason) {
   return "missing";
 }
 
-ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given, int num_skills,
+ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given_trials, int num_skills,
                                                 int num_targets, ExpertiseMode mode,
                                                 std::optional<double> noise_floor) {
-  for (std::size_t t = 0; t < given.size(); ++t) check(given[t], t);
+  const std::size_t references = reference_count(given_trials);
+  for (std::size_t t = 0; t < given_trials.size(); ++t) check(given_trials[t], t, references);
   if (noise_floor && !(std::isfinite(*noise_floor) && *noise_floor <= 0.0))
     throw InputError("quality-aware expertise", "noise floor " + std::to_string(*noise_floor) + " must be <= 0");
+  ExecutionExpertise out;
+  if (mode == ExpertiseMode::QualityAware) out.learner_hands = learners_hands(given_trials, references);
+  const std::vector<ExecutionTrial> given = in_learners_hand(given_trials, out.learner_hands);
   const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor);
   const Waivers waived = missing_waivers(given, mode, noise_floor);
   std::vector<ExpertiseTrial> plain;
   for (const ExecutionTrial& t : given) plain.push_back(t.trial);
-  ExecutionExpertise out;
   out.estimate = estimate_expertise(plain, num_skills, num_targets);
   if (mode == ExpertiseMode::QualityAware) {
     waive_missing(out.estimate, waived);

@@ -22,6 +22,13 @@
 // scores at or above f is not charged - the learner did it as well as noise allows, the segmenter missed it.
 // Without a floor (nullopt) both rules are as without it: the outlier cut alone, every "missing" charged.
 //
+// Why the learner's hand: a task may give other right ways of doing the expert's trial (execution_reference.hpp;
+// writing: the word in other drawers' hands). The reference whose scores have the highest mean over all of
+// the learner's segments, if higher than the expert's own, is taken as the learner's hand (kLearnerHands),
+// and each segment's q is the better of its score against the expert and against that hand; then everything
+// above. One hand for the whole pre-test, not one per segment: a letter written wrong in every word still
+// differs from the hand the rest of the learner's letters follow.
+//
 // Why each target was chosen is its largest penalty: "missing" (Alg. 2's) or "done with a large error"
 // (the execution term), with the trial, the expert's steps and the learner's aligned steps.
 #include <map>
@@ -39,6 +46,9 @@ inline constexpr double kExecutionWeight = 1.0;
 // literature, not fitted to the planted-learner tables.
 inline constexpr double kOutlierCut = 3.5;
 inline constexpr double kMadToStandardDeviation = 1.4826;
+// How many references may be taken as the learner's hand: one. Three were tried on the own-hands table
+// (docs/skills.md) and found a letter or two more at one seed of two; one hand waives less.
+inline constexpr int kLearnerHands = 1;
 
 enum class ExpertiseMode {
   Alg2,          // the paper's Alg. 2 exactly (research mode)
@@ -51,14 +61,18 @@ const std::string& expertise_mode_name(ExpertiseMode mode);
 
 // One expert segment's execution by the learner.
 struct SegmentExecution {
-  double reward = 0.0;    // q <= 0
+  double reward = 0.0;    // q <= 0, against the expert's own way
   int learner_begin = 0;  // the learner's aligned steps [begin, end)
   int learner_end = 0;
+  // The same part scored against each of the task's references (TaskKit::execution_references), in the
+  // same order in every trial; empty when the task gives none.
+  std::vector<double> reference_rewards = {};
 };
 
 struct ExecutionTrial {
-  ExpertiseTrial trial;                    // what Alg. 2 reads
-  std::vector<SegmentExecution> segments;  // parallel to trial.expert.segments
+  ExpertiseTrial trial;                           // what Alg. 2 reads
+  std::vector<SegmentExecution> segments;         // parallel to trial.expert.segments
+  std::vector<std::string> reference_names = {};  // what each reference_rewards entry was scored against
 };
 
 // NoMistake: a target without any penalty (fewer weak skills than targets: Alg. 3 still drills the skills
@@ -78,13 +92,15 @@ struct TargetWhy {
 };
 
 struct ExecutionExpertise {
-  ExpertiseEstimate estimate;  // contributions hold both kinds; an execution one's reward is q
-  std::vector<TargetWhy> why;  // one per estimate.targets entry, in that order
+  ExpertiseEstimate estimate;      // contributions hold both kinds; an execution one's reward is q
+  std::vector<TargetWhy> why;      // one per estimate.targets entry, in that order
+  std::vector<int> learner_hands;  // the references taken as the learner's hand, best first; none: the expert's own
 };
 
 // mode Alg2: estimate_expertise exactly (why from its penalties; noise_floor unused); QualityAware: the
-// formula above, with the noise floor's two rules when one is given (<= 0). Throws InputError as
-// estimate_expertise does, and for segments not parallel to the expert's, q > 0 or a floor > 0.
+// formula above, with the learner's hand and the noise floor's two rules when one is given (<= 0). Throws
+// InputError as estimate_expertise does, and for segments not parallel to the expert's, q > 0, a floor > 0
+// or segments with different numbers of reference scores.
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
                                                 int num_targets, ExpertiseMode mode,
                                                 std::optional<double> noise_floor = std::nullopt);

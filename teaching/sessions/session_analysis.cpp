@@ -24,21 +24,35 @@ std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vect
   return out;
 }
 
+// The trial document's scenario (null when it has none: steps_of has refused such a trial already).
+Json scenario_of(const Json& trial) {
+  return trial.is_object() && trial.contains("scenario") ? trial.at("scenario") : Json();
+}
+
 }  // namespace
 
 std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vector<TestTrial>& trials) {
   return expertise_trials(kit, trials, learner_steps(kit, trials));
 }
 
-ExecutionTrial execution_trial(const TaskKit& kit, ExpertiseTrial trial, const StepSequence& expert,
-                               const StepSequence& learner, ExpertiseMode mode) {
-  ExecutionTrial out{std::move(trial), {}};
+ExecutionTrial execution_trial(const TaskKit& kit, const Json& scenario, ExpertiseTrial trial,
+                               const StepSequence& expert, const StepSequence& learner, ExpertiseMode mode) {
+  ExecutionTrial out{std::move(trial), {}, {}};
   const StepAlignment path = align_traces(kit.trace_points(expert), kit.trace_points(learner));
+  const std::vector<ExecutionReference> references = mode == ExpertiseMode::QualityAware
+                                                         ? kit.execution_references(scenario, expert)
+                                                         : std::vector<ExecutionReference>{};
+  for (const ExecutionReference& r : references) out.reference_names.push_back(r.name);
   for (const SkillSegment& s : out.trial.expert.segments) {
     SegmentExecution e;
     std::tie(e.learner_begin, e.learner_end) = aligned_span(path, s.begin, s.end);
     if (mode == ExpertiseMode::QualityAware)
       e.reward = std::min(kit.execution_reward(expert, learner, path, s.begin, s.end), 0.0);
+    for (const ExecutionReference& r : references) {
+      const auto [begin, end] = aligned_span(r.from_expert, s.begin, s.end);
+      const StepAlignment carried = through_reference(r, path, s.begin, s.end);
+      e.reference_rewards.push_back(std::min(kit.execution_reward(r.steps, learner, carried, begin, end), 0.0));
+    }
     out.segments.push_back(e);
   }
   return out;
@@ -52,7 +66,8 @@ ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTria
   if (mode == ExpertiseMode::Alg2) return estimate_expertise(plain, skills, targets);
   std::vector<ExecutionTrial> evidence;
   for (std::size_t i = 0; i < trials.size(); ++i)
-    evidence.push_back(execution_trial(kit, std::move(plain[i]), trials[i].expert_steps, steps[i], mode));
+    evidence.push_back(execution_trial(kit, scenario_of(trials[i].trial), std::move(plain[i]), trials[i].expert_steps,
+                                       steps[i], mode));
   return estimate_execution_expertise(evidence, skills, targets, mode, kit.execution_noise_floor()).estimate;
 }
 

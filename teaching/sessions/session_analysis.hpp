@@ -25,9 +25,10 @@ struct TestTrial {
 std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vector<TestTrial>& trials);
 
 // One trial's evidence for quality-aware expertise: `trial` (Alg. 2's) plus, per expert segment, the
-// learner's steps aligned with it and (mode QualityAware) the kit's execution score of that part.
-ExecutionTrial execution_trial(const TaskKit& kit, ExpertiseTrial trial, const StepSequence& expert,
-                               const StepSequence& learner, ExpertiseMode mode);
+// learner's steps aligned with it and (mode QualityAware) the kit's execution score of that part, against
+// the expert and against each of the kit's execution_references for `scenario`.
+ExecutionTrial execution_trial(const TaskKit& kit, const Json& scenario, ExpertiseTrial trial,
+                               const StepSequence& expert, const StepSequence& learner, ExpertiseMode mode);
 
 // The kit's learners_expertise() with the kit's skill count and its drill config's N_target.
 ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTrial>& trials);

@@ -14,6 +14,7 @@
 #include "teaching/curricula/curriculum.hpp"
 #include "teaching/drills/drill_plan.hpp"
 #include "teaching/expertise/execution_expertise.hpp"
+#include "teaching/expertise/execution_reference.hpp"
 #include "teaching/expertise/trace_alignment.hpp"
 #include "teaching/skills/skill_extractor.hpp"
 
@@ -74,6 +75,13 @@ class TaskKit {
   // <= 0, 0 when the learner's part repeats the expert's.
   virtual double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
                                   int begin, int end) const = 0;
+  // Other right ways to do the expert's trial on `scenario` (`expert`: its steps), which the execution term
+  // may take as the learner's hand (execution_reference.hpp): the same references in the same order for every
+  // scenario of this kit. None by default.
+  virtual std::vector<ExecutionReference> execution_references(const Json& /*scenario*/,
+                                                               const StepSequence& /*expert*/) const {
+    return {};
+  }
   // What realistic noise alone does to execution_reward on this task with this kit's model (a low percentile
   // of noise-only learners' segment scores, docs/skills.md), for quality-aware expertise's noise-floor rules;
   // nullopt where those rules measured worse (parking) - then the outlier cut alone decides.

@@ -31,9 +31,10 @@ std::vector<DiagnosedTrial> diagnose_each_trial(const TaskKit& kit, const std::v
     const StepSequence learner_steps = kit.steps_of(trial);
     d.student = kit.extractor().extract(learner_steps);
     d.reward = kit.reward_of(trial);
-    d.execution =
-        execution_trial(kit, {static_cast<int>(i), d.expert, d.student, d.reward}, expert_steps, learner_steps, mode)
-            .segments;
+    ExecutionTrial execution = execution_trial(kit, d.scenario, {static_cast<int>(i), d.expert, d.student, d.reward},
+                                               expert_steps, learner_steps, mode);
+    d.execution = std::move(execution.segments);
+    d.references = std::move(execution.reference_names);
     out.push_back(std::move(d));
   }
   return out;
@@ -46,13 +47,15 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
   std::vector<ExecutionTrial> evidence;
   for (std::size_t i = 0; i < out.trials.size(); ++i) {
     const DiagnosedTrial& d = out.trials[i];
-    evidence.push_back({{static_cast<int>(i), d.expert, d.student, d.reward}, d.execution});
+    evidence.push_back({{static_cast<int>(i), d.expert, d.student, d.reward}, d.execution, d.references});
   }
   const CurriculumConfig config = kit.curriculum_config();
   ExecutionExpertise estimate = estimate_execution_expertise(
       evidence, kit.extractor().num_skills(), config.drills.num_targets, mode, kit.execution_noise_floor());
   out.expertise = std::move(estimate.estimate);
   out.why = std::move(estimate.why);
+  if (!estimate.learner_hands.empty() && !out.trials.empty())
+    out.learner_hand = out.trials.front().references.at(static_cast<std::size_t>(estimate.learner_hands.front()));
   const DrillBuilder builder(demo_skills(kit.expert_pool()), config.drills);
   Rng rng(seed);
   for (const DrillPlan& plan : builder.individualized(out.expertise, rng))
@@ -81,6 +84,7 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
   out["expertise_mode"] = expertise_mode_name(diagnosis.mode);
   const std::optional<double> floor = kit.execution_noise_floor();
   out["noise_floor"] = diagnosis.mode == ExpertiseMode::QualityAware && floor ? Json(*floor) : Json(nullptr);
+  out["learner_hand"] = diagnosis.learner_hand.empty() ? Json(nullptr) : Json(diagnosis.learner_hand);
   out["expertise"] = expertise_to_json(diagnosis.expertise);
   Json targets = Json::array();
   for (std::size_t k = 0; k < diagnosis.expertise.targets.size(); ++k) {

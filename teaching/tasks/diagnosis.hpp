@@ -20,6 +20,7 @@ struct DiagnosedTrial {
   // Per expert segment: the learner's aligned steps and, in quality-aware mode, the task's raw execution
   // score of them (before the learner-relative cut and the noise floor; 0 in Alg. 2 mode).
   std::vector<SegmentExecution> execution;
+  std::vector<std::string> references;  // the names of the references execution[k].reference_rewards are against
 };
 
 struct Diagnosis {
@@ -27,6 +28,7 @@ struct Diagnosis {
   ExpertiseMode mode = ExpertiseMode::Alg2;
   ExpertiseEstimate expertise;        // Alg. 2 or quality-aware (targets: N_target of the kit's drill config)
   std::vector<TargetWhy> why;         // why each target was chosen and where, parallel to expertise.targets
+  std::string learner_hand;           // the reference taken as the learner's hand (quality-aware); empty: the expert's
   std::vector<PlayableDrill> drills;  // Alg. 3 for the targets, weakest first, projected by the kit
 };
 
@@ -44,7 +46,8 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
 Json segmentation_json(const Segmentation& segmentation);
 // {"task", "extractor", "extractor_notice", "trials":[{scenario, pool_index, reward, skills, expert_skills}],
 //  "expertise_mode":"alg2"|"quality-aware", "noise_floor": the kit's execution noise floor the quality-aware
-//  estimate used (null: none, or Alg. 2), "expertise":{...}, "targets":[{skill, expertise, description,
+//  estimate used (null: none, or Alg. 2), "learner_hand": the reference the learner's segments were also
+//  scored against (null: the expert's alone), "expertise":{...}, "targets":[{skill, expertise, description,
 //  "why":{"reason":"missing"|"done with a large error here"|"no mistake seen", "trial", "penalty", "expert_steps":[b,
 //  e], "learner_steps":[b, e]}}], "drills":[{plan..., "skills_described", "steps", "success", "return", "ghost_path",
 //  "segment_starts", "trial"}]}

@@ -11,12 +11,6 @@ namespace {
 
 constexpr int kNoStep = -2;  // a clean step the alignment pairs with no copy step (never a skill, nor -1)
 
-std::vector<writing::TracePoint> step_positions(const StepSequence& steps) {
-  std::vector<writing::TracePoint> out;
-  for (const TracePoint3& p : writing_trace_points(steps)) out.push_back({p[0], p[1], true});
-  return out;
-}
-
 std::vector<int> skill_per_step(const Segmentation& segmentation, int length) {
   std::vector<int> out(static_cast<std::size_t>(length), -1);
   for (const SkillSegment& s : segmentation.segments)
@@ -41,7 +35,7 @@ CrossHandWords::CrossHandWords(const ClassicDrawerGlyphs& glyphs, const std::vec
       pool.copies.push_back(
           writing_step_sequence(realistic_trace(glyphs, words[i], other, root.fork(i).next_u64()).trace,
                                 writing::AlphabetKind::Classic, words[i]));
-      pool.paths.push_back(align_same_word(step_positions(clean_[i]), step_positions(pool.copies[i])));
+      pool.paths.push_back(align_same_word(clean_[i], pool.copies[i]));
     }
     pools_.push_back(std::move(pool));
   }

@@ -21,9 +21,10 @@ double mean_credit(const std::vector<TracePoint3>& from, const std::vector<Trace
   if (from.empty() || to.empty()) return 0.0;
   double sum = 0.0;
   for (const TracePoint3& a : from) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for (const TracePoint3& b : to) nearest = std::min(nearest, std::hypot(a[0] - b[0], a[1] - b[1]));
-    sum += credit(nearest);
+    double nearest = std::numeric_limits<double>::infinity();  // squared: one square root per point
+    for (const TracePoint3& b : to)
+      nearest = std::min(nearest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]));
+    sum += credit(std::sqrt(nearest));
   }
   return sum / static_cast<double>(from.size());
 }

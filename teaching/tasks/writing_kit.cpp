@@ -79,6 +79,7 @@ WritingKit::WritingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
   places_ = writing_skill_places(characters, demo_skills(demos_), extractor_->num_skills());
   descriptions_ = describe_writing_places(places_);
   projector_ = std::make_unique<WritingDrillProjector>(std::move(steps));
+  hands_ = std::make_unique<WritingHandReferences>(options_.data_dir);
 }
 
 StepSequence WritingKit::steps_of(const Json& trial) const {
@@ -161,6 +162,13 @@ std::vector<TracePoint3> WritingKit::trace_points(const StepSequence& steps) con
 double WritingKit::execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path,
                                     int begin, int end) const {
   return writing_execution_reward(expert, learner, path, begin, end);
+}
+
+std::vector<ExecutionReference> WritingKit::execution_references(const Json& scenario,
+                                                                 const StepSequence& expert) const {
+  const writing::WritingScenario parsed = scenario_of(scenario, "scenario");
+  if (parsed.alphabet != writing::AlphabetKind::Classic) return {};
+  return hands_->references(parsed.word, expert);
 }
 
 }  // namespace sc

@@ -14,6 +14,7 @@
 #include "teaching/sessions/task_kit.hpp"
 #include "teaching/tasks/writing_drill_projector.hpp"
 #include "teaching/tasks/writing_execution.hpp"
+#include "teaching/tasks/writing_hand_references.hpp"
 #include "teaching/tasks/writing_skill_places.hpp"
 
 namespace sc {
@@ -71,6 +72,8 @@ class WritingKit final : public TaskKit {
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::QualityAware; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;
+  // Classic words: the word in the hands of drawers 1-10 (writing_hand_references.hpp); none for Balinese.
+  std::vector<ExecutionReference> execution_references(const Json& scenario, const StepSequence& expert) const override;
 
   const std::vector<WritingSkillPlace>& skill_places() const { return places_; }
   const std::vector<writing::WordTrajectory>& gold_words() const { return golds_; }
@@ -87,6 +90,7 @@ class WritingKit final : public TaskKit {
   std::vector<WritingSkillPlace> places_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills
   std::unique_ptr<WritingDrillProjector> projector_;
+  std::unique_ptr<WritingHandReferences> hands_;
 };
 
 }  // namespace sc

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "teaching/tasks/writing_execution.hpp"
+
 namespace sc {
 namespace {
 
@@ -29,7 +31,17 @@ std::vector<TracePoint3> in_frame(const std::vector<writing::TracePoint>& pts, c
   return out;
 }
 
+std::vector<writing::TracePoint> step_positions(const StepSequence& steps) {
+  std::vector<writing::TracePoint> out;
+  for (const TracePoint3& p : writing_trace_points(steps)) out.push_back({p[0], p[1], true});
+  return out;
+}
+
 }  // namespace
+
+StepAlignment align_same_word(const StepSequence& clean, const StepSequence& copy) {
+  return align_same_word(step_positions(clean), step_positions(copy));
+}
 
 StepAlignment align_same_word(const std::vector<writing::TracePoint>& clean,
                               const std::vector<writing::TracePoint>& copy) {

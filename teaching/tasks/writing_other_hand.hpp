@@ -34,5 +34,7 @@ CarriedBoundaries carried_boundaries(const WrittenWord& clean, const WrittenWord
 // word, both placed in the clean trace's frame.
 StepAlignment align_same_word(const std::vector<writing::TracePoint>& clean,
                               const std::vector<writing::TracePoint>& copy);
+// The same on the pen positions of two writing step sequences (writing_trace_points): (clean step, copy step).
+StepAlignment align_same_word(const StepSequence& clean, const StepSequence& copy);
 
 }  // namespace sc

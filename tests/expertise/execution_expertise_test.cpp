@@ -135,6 +135,75 @@ TEST(ExecutionExpertise, RefusesScoresNotParallelToTheExpertOrPositive) {
   EXPECT_THROW(estimate_execution_expertise({t}, 3, 2, ExpertiseMode::QualityAware), InputError);
 }
 
+// Three trials, skills 0, 1, 2 all shown; each segment's score against the expert and against two references.
+// The learner writes in a hand of its own: close to reference 0 except skill 2, which it does badly in every
+// trial; against the expert, skill 1 (a shape the learner's hand does differently) looks worst.
+std::vector<ExecutionTrial> own_hand_trials(double expert1, double ref0_of_skill2) {
+  std::vector<ExecutionTrial> out;
+  for (int t = 0; t < 3; ++t) {
+    ExecutionTrial et;
+    et.trial.expert = {{{0, 0, 10}, {1, 10, 20}, {2, 20, 30}}};
+    et.trial.student = et.trial.expert;
+    et.trial.student_reward = -0.2;
+    const double scatter = 0.01 * t;
+    et.segments = {{-0.1 - scatter, 0, 10, {-0.05 - scatter, -0.7}},
+                   {expert1 - scatter, 10, 20, {-0.02 - scatter, -0.7}},
+                   {-0.5 - scatter, 20, 30, {ref0_of_skill2 - scatter, -0.7}}};
+    et.reference_names = {"hand 0", "hand 1"};
+    out.push_back(et);
+  }
+  return out;
+}
+
+std::vector<ExecutionTrial> without_references(std::vector<ExecutionTrial> trials) {
+  for (ExecutionTrial& t : trials) {
+    t.reference_names.clear();
+    for (SegmentExecution& s : t.segments) s.reference_rewards.clear();
+  }
+  return trials;
+}
+
+TEST(ExecutionExpertise, ALearnersOwnHandIsTheYardstickAndTheSkillDoneBadlyInItIsCharged) {
+  const std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.5);
+  const ExecutionExpertise mine = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_EQ(mine.learner_hands, std::vector<int>{0});
+  ASSERT_FALSE(mine.estimate.targets.empty());
+  EXPECT_EQ(mine.estimate.targets[0], 2);
+  EXPECT_EQ(mine.why[0].reason, TargetReason::LargeError);
+  EXPECT_LT(mine.estimate.expertise[2], -0.1);
+  EXPECT_EQ(mine.estimate.expertise[1], 0.0);  // the hand's own shape of skill 1 is not an error
+  // Against the expert alone the scores scatter so widely (-0.1 / -0.8 / -0.5) that nothing stands out.
+  const ExecutionExpertise expert_only =
+      estimate_execution_expertise(without_references(trials), 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_TRUE(expert_only.learner_hands.empty());
+  EXPECT_EQ(expert_only.estimate.expertise[2], 0.0);
+  // Alg. 2 never looks at the references.
+  EXPECT_TRUE(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::Alg2).learner_hands.empty());
+}
+
+TEST(ExecutionExpertise, NoHandIsTakenWhenTheExpertsOwnFitsBetterSoAnotherShapeOfOneSkillStaysAnError) {
+  // A learner writing the expert's shapes (close to the expert) except skill 2, which matches reference 0.
+  std::vector<ExecutionTrial> trials = own_hand_trials(-0.02, -0.01);
+  for (ExecutionTrial& t : trials) {
+    t.segments[0].reward = -0.01, t.segments[1].reward = -0.02;
+    t.segments[0].reference_rewards[0] = -0.6, t.segments[1].reference_rewards[0] = -0.7;
+  }
+  const ExecutionExpertise e = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_TRUE(e.learner_hands.empty());
+  ASSERT_FALSE(e.estimate.targets.empty());
+  EXPECT_EQ(e.estimate.targets[0], 2);
+  EXPECT_LT(e.estimate.expertise[2], -0.1);
+}
+
+TEST(ExecutionExpertise, RefusesSegmentsScoredAgainstDifferentReferences) {
+  std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.5);
+  trials[1].segments[2].reference_rewards.pop_back();
+  EXPECT_THROW(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware), InputError);
+  trials = own_hand_trials(-0.8, -0.5);
+  trials[0].segments[0].reference_rewards[1] = 0.3;
+  EXPECT_THROW(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware), InputError);
+}
+
 TEST(ExecutionExpertise, EveryModeHasOneNameThatParsesBack) {
   EXPECT_EQ(expertise_mode_name(ExpertiseMode::Alg2), "alg2");
   EXPECT_EQ(expertise_mode_name(ExpertiseMode::QualityAware), "quality-aware");
