@@ -57,6 +57,14 @@ std::vector<int> learners_hands(const std::vector<ExecutionTrial>& trials, std::
   return out;
 }
 
+// Reference `hand`'s name as the trials give it ("reference k" if they give none).
+std::string hand_name(const std::vector<ExecutionTrial>& trials, int hand) {
+  for (const ExecutionTrial& t : trials)
+    if (static_cast<std::size_t>(hand) < t.reference_names.size())
+      return t.reference_names[static_cast<std::size_t>(hand)];
+  return "reference " + std::to_string(hand);
+}
+
 // Each segment's reward against the expert or the learner's hands, whichever is closest.
 std::vector<ExecutionTrial> in_learners_hand(std::vector<ExecutionTrial> trials, const std::vector<int>& hands) {
   for (ExecutionTrial& t : trials)
@@ -208,6 +216,7 @@ ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial
     rank_expertise(out.estimate, num_targets);
   }
   for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, waived, mode));
+  if (!out.learner_hands.empty()) out.estimate.learner_hand = hand_name(given_trials, out.learner_hands.front());
   return out;
 }
 

@@ -13,6 +13,7 @@
 // Rewards must be <= 0 (optimum 0), as the paper assumes. Task adapters map their scores:
 //   parking: the trial's trajectory reward (the reference's episode score is the last step's reward, <= 0);
 //   writing: an overlap score s in [0, 1] maps to r = s − 1 (see non_positive_reward).
+#include <string>
 #include <vector>
 
 #include "teaching/skills/skill_extractor.hpp"
@@ -49,6 +50,9 @@ struct ExpertiseEstimate {
   // sequence carry no evidence and are never ranked or targeted.
   std::vector<int> ranking;
   std::vector<int> targets;  // the first N_target entries of ranking (fewer if fewer skills were seen)
+  // Quality-aware expertise only: the reference taken as the learner's hand (execution_expertise.hpp), e.g.
+  // "the letters of Omniglot drawer 5"; empty when the execution term measured against the expert alone.
+  std::string learner_hand;
 
   int num_skills() const { return static_cast<int>(expertise.size()); }
   // True when the skill lost expertise (at least one penalty with a nonzero reward).

@@ -32,11 +32,13 @@ Json expertise_to_json(const ExpertiseEstimate& estimate) {
     }
     contributions.push_back(std::move(list));
   }
-  return {{"expertise", estimate.expertise},
-          {"occurrences", estimate.occurrences},
-          {"ranking", estimate.ranking},
-          {"targets", estimate.targets},
-          {"contributions", std::move(contributions)}};
+  Json out = {{"expertise", estimate.expertise},
+              {"occurrences", estimate.occurrences},
+              {"ranking", estimate.ranking},
+              {"targets", estimate.targets},
+              {"contributions", std::move(contributions)}};
+  if (!estimate.learner_hand.empty()) out["learner_hand"] = estimate.learner_hand;
+  return out;
 }
 
 ExpertiseEstimate expertise_from_json(const JsonView& view) {
@@ -70,6 +72,7 @@ ExpertiseEstimate expertise_from_json(const JsonView& view) {
   }
   out.ranking = skill_list(view.at("ranking"), static_cast<int>(n));
   out.targets = skill_list(view.at("targets"), static_cast<int>(n));
+  if (const auto hand = view.find("learner_hand")) out.learner_hand = hand->string();
   return out;
 }
 

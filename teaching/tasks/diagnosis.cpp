@@ -54,8 +54,6 @@ Diagnosis diagnose_trials(const TaskKit& kit, const std::vector<Json>& trials, s
       evidence, kit.extractor().num_skills(), config.drills.num_targets, mode, kit.execution_noise_floor());
   out.expertise = std::move(estimate.estimate);
   out.why = std::move(estimate.why);
-  if (!estimate.learner_hands.empty() && !out.trials.empty())
-    out.learner_hand = out.trials.front().references.at(static_cast<std::size_t>(estimate.learner_hands.front()));
   const DrillBuilder builder(demo_skills(kit.expert_pool()), config.drills);
   Rng rng(seed);
   for (const DrillPlan& plan : builder.individualized(out.expertise, rng))
@@ -84,7 +82,8 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
   out["expertise_mode"] = expertise_mode_name(diagnosis.mode);
   const std::optional<double> floor = kit.execution_noise_floor();
   out["noise_floor"] = diagnosis.mode == ExpertiseMode::QualityAware && floor ? Json(*floor) : Json(nullptr);
-  out["learner_hand"] = diagnosis.learner_hand.empty() ? Json(nullptr) : Json(diagnosis.learner_hand);
+  out["learner_hand"] =
+      diagnosis.expertise.learner_hand.empty() ? Json(nullptr) : Json(diagnosis.expertise.learner_hand);
   out["expertise"] = expertise_to_json(diagnosis.expertise);
   Json targets = Json::array();
   for (std::size_t k = 0; k < diagnosis.expertise.targets.size(); ++k) {

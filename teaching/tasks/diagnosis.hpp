@@ -28,7 +28,6 @@ struct Diagnosis {
   ExpertiseMode mode = ExpertiseMode::Alg2;
   ExpertiseEstimate expertise;        // Alg. 2 or quality-aware (targets: N_target of the kit's drill config)
   std::vector<TargetWhy> why;         // why each target was chosen and where, parallel to expertise.targets
-  std::string learner_hand;           // the reference taken as the learner's hand (quality-aware); empty: the expert's
   std::vector<PlayableDrill> drills;  // Alg. 3 for the targets, weakest first, projected by the kit
 };
 

@@ -167,6 +167,7 @@ TEST(ExecutionExpertise, ALearnersOwnHandIsTheYardstickAndTheSkillDoneBadlyInItI
   const std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.5);
   const ExecutionExpertise mine = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware);
   EXPECT_EQ(mine.learner_hands, std::vector<int>{0});
+  EXPECT_EQ(mine.estimate.learner_hand, "hand 0");
   ASSERT_FALSE(mine.estimate.targets.empty());
   EXPECT_EQ(mine.estimate.targets[0], 2);
   EXPECT_EQ(mine.why[0].reason, TargetReason::LargeError);
@@ -176,6 +177,7 @@ TEST(ExecutionExpertise, ALearnersOwnHandIsTheYardstickAndTheSkillDoneBadlyInItI
   const ExecutionExpertise expert_only =
       estimate_execution_expertise(without_references(trials), 3, 2, ExpertiseMode::QualityAware);
   EXPECT_TRUE(expert_only.learner_hands.empty());
+  EXPECT_EQ(expert_only.estimate.learner_hand, "");
   EXPECT_EQ(expert_only.estimate.expertise[2], 0.0);
   // Alg. 2 never looks at the references.
   EXPECT_TRUE(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::Alg2).learner_hands.empty());

@@ -39,6 +39,17 @@ TEST(ExpertiseJson, ExecutionPenaltiesKeepTheirKindAndOlderRecordsReadAsMissing)
     for (const ExpertiseContribution& c : per_skill) EXPECT_FALSE(c.execution);
 }
 
+TEST(ExpertiseJson, TheLearnersHandIsKeptAndWrittenOnlyWhenThereIsOne) {
+  ExpertiseEstimate e = estimate_expertise({{3, segmentation_of({0, 1}), segmentation_of({0}), -0.5}}, 2, 2);
+  EXPECT_FALSE(expertise_to_json(e).contains("learner_hand"));  // records as before the field existed
+  EXPECT_EQ(expertise_from_json(JsonView(expertise_to_json(e), "diag.json")).learner_hand, "");
+  e.learner_hand = "the letters of Omniglot drawer 5";
+  EXPECT_EQ(expertise_from_json(JsonView(expertise_to_json(e), "diag.json")).learner_hand, e.learner_hand);
+  Json doc = expertise_to_json(e);
+  doc["learner_hand"] = 5;
+  EXPECT_THROW(expertise_from_json(JsonView(doc, "diag.json")), InputError);
+}
+
 TEST(ExpertiseJson, BadDocumentsNameThePath) {
   Json doc = expertise_to_json(estimate_expertise({{0, segmentation_of({0, 1}), segmentation_of({}), -1.0}}, 2, 2));
   doc["ranking"][0] = 9;

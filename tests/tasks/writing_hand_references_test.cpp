@@ -62,7 +62,7 @@ std::string diagnosed_hand(int hand_drawer) {
   const std::vector<std::string> words = {"b-a-t-c-", "-e-^a-^-"};
   return diagnose_trials(hand_kit(), planted_pretest_trials(hand_glyphs(), words, learner), 1,
                          ExpertiseMode::QualityAware)
-      .learner_hand;
+      .expertise.learner_hand;
 }
 
 TEST(WritingHandReferences, ALearnerWritingInATrainingDrawersHandIsScoredAgainstThatHand) {

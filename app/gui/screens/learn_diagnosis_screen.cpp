@@ -87,6 +87,13 @@ class LearnDiagnosisScreen final : public Screen {
         "Each bar is one skill the expert uses; a longer bar means more trouble with it. The "
         "highlighted skills get drills now.");
     if (!kit.extractor_notice().empty()) learn_ui::muted_wrapped(("Note: " + kit.extractor_notice()).c_str());
+    // Quality-aware expertise measured against the learner's own hand as well (execution_expertise.hpp): say so,
+    // or a learner whose letters all differ from the guide wonders why only one of them is called an error.
+    if (!e.learner_hand.empty())
+      learn_ui::muted_wrapped(("Your letters follow a hand of your own, closest to " + e.learner_hand +
+                               ". Each skill was compared with the guide and with that hand; only what is far from "
+                               "both counts as an error.")
+                                  .c_str());
     double worst = 1e-9;
     for (double v : e.expertise) worst = std::max(worst, -v);
     if (worst <= 1e-9)
