@@ -38,6 +38,7 @@ struct DiagnosisExplanation {
   bool matches_stored = false;  // recomputed expertise equals the stored vector (to 1e-9) with the same targets
   std::string extractor;        // the stored diagnosis's extractor name
   ExpertiseMode mode = ExpertiseMode::Alg2;  // the kit's learners_expertise(), with which it is recomputed
+  std::string learner_hand;  // quality-aware: the hand the learner was also scored against (empty: the expert's)
 };
 
 // Throws InputError when the session has no pre-test trials or no round-1 diagnosis.

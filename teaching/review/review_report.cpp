@@ -76,8 +76,13 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
        "learner's trial lacks costs &Delta; = &minus;r / j, r the trial's reward"
     << (d.mode == ExpertiseMode::Alg2 ? ". "
                                       : "; one done worse than the learner's other skills (\"done badly\") costs "
-                                        "&Delta; = &minus;q / j, q that part's execution score below the learner's "
-                                        "median. ")
+                                        "&Delta; = &minus;q / j, q how far that part's execution score falls beyond "
+                                        "the learner's usual spread and what noise alone does. ")
+    << (d.learner_hand.empty()
+            ? std::string()
+            : "The learner's letters follow a hand of their own, closest to " + html_escape(d.learner_hand) +
+                  ": each part was also scored against that hand, and q is the better of the two "
+                  "scores. ")
     << (d.matches_stored
             ? "The recomputation matches the stored diagnosis."
             : "<b>The recomputation differs from the stored diagnosis</b> (the model or data changed since).")

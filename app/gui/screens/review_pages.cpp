@@ -248,9 +248,16 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
         "%s recomputed from the %d pre-test trials (%s extractor). A skill the expert used at "
         "position j that the learner's trial lacks costs Delta = -r / j (r: that trial's reward)%s.",
         d->mode == ExpertiseMode::Alg2 ? "Alg. 2" : "Quality-aware expertise", d->pretest_trials, d->extractor.c_str(),
-        d->mode == ExpertiseMode::Alg2 ? ""
-                                       : "; one shown but done worse than the learner's other skills costs "
-                                         "Delta = -q / j (q: that part's execution score below the learner's median)");
+        d->mode == ExpertiseMode::Alg2
+            ? ""
+            : "; one shown but done worse than the learner's other skills costs "
+              "Delta = -q / j (q: how far that part's execution score falls beyond the learner's usual "
+              "spread and what noise alone does)");
+    if (!d->learner_hand.empty())
+      ImGui::TextDisabled(
+          "The learner's letters follow a hand of their own, closest to %s: each part was also scored "
+          "against that hand, and q is the better of the two scores.",
+          d->learner_hand.c_str());
     ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
                        d->matches_stored ? "Matches the stored diagnosis."
                                          : "Differs from the stored diagnosis (model or data changed since).");
