@@ -35,6 +35,15 @@ TEST(LearnScreenGolden, WritingTrialMatchesGolden) {
   EXPECT_TRUE(matches_golden(read_png(out), "learn/learn_trial_writing"));
 }
 
+TEST(LearnScreenGolden, WritingDiagnosisMatchesGolden) {
+  // The writing pre-test's diagnosis (quality-aware expertise): letters and connectors with their pictures.
+  const auto out = test_output_dir() / "learn_diagnosis_writing.png";
+  const CommandResult shot =
+      run_skillcoach("screenshot --screen learn_diagnosis --task writing --size 1280x720 --out '" + out.string() + "'");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  EXPECT_TRUE(matches_golden(read_png(out), "learn/learn_diagnosis_writing"));
+}
+
 INSTANTIATE_TEST_SUITE_P(Trainer, LearnScreenGolden,
                          ::testing::Values("learn_welcome", "learn_instructions", "learn_trial", "learn_diagnosis",
                                            "learn_summary"));

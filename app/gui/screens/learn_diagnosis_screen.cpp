@@ -97,7 +97,11 @@ class LearnDiagnosisScreen final : public Screen {
     double worst = 1e-9;
     for (double v : e.expertise) worst = std::max(worst, -v);
     if (worst <= 1e-9)
-      learn_ui::muted_wrapped("No skill stood out as missing: the drills cover the skills the expert relies on most.");
+      learn_ui::muted_wrapped(kit.learners_expertise() == ExpertiseMode::QualityAware
+                                  ? "No skill stood out as missing or done badly: the drills cover the skills the "
+                                    "expert relies on most."
+                                  : "No skill stood out as missing: the drills cover the skills the expert relies on "
+                                    "most.");
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
     // A weak skill too brief to practise on its own (teachable_skills.hpp) says so: otherwise a learner
     // wonders why a long bar gets no drill.
