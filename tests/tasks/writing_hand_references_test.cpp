@@ -60,9 +60,11 @@ std::string diagnosed_hand(int hand_drawer) {
   PlantedLearner learner{0, LetterFault::None, 7};
   learner.hand_drawer = hand_drawer;
   const std::vector<std::string> words = {"b-a-t-c-", "-e-^a-^-"};
-  return diagnose_trials(hand_kit(), planted_pretest_trials(hand_glyphs(), words, learner), 1,
-                         ExpertiseMode::QualityAware)
-      .expertise.learner_hand;
+  const Diagnosis d = diagnose_trials(hand_kit(), planted_pretest_trials(hand_glyphs(), words, learner), 1,
+                                      ExpertiseMode::QualityAware);
+  const Json doc = diagnosis_json(hand_kit(), d);  // what `skillcoach diagnose` prints
+  EXPECT_EQ(doc.at("learner_hand"), d.expertise.learner_hand.empty() ? Json(nullptr) : Json(d.expertise.learner_hand));
+  return d.expertise.learner_hand;
 }
 
 TEST(WritingHandReferences, ALearnerWritingInATrainingDrawersHandIsScoredAgainstThatHand) {
