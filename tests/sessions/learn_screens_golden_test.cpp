@@ -26,23 +26,21 @@ TEST_P(LearnScreenGolden, MatchesGolden) {
   EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen));
 }
 
-TEST(LearnScreenGolden, WritingTrialMatchesGolden) {
-  // A drill practice half-way: the ghost ribbon of the stitched drill, the scripted learner's ink over it.
-  const auto out = test_output_dir() / "learn_trial_writing.png";
+// The writing trainer's screens: `screen` of the writing session, golden learn/<screen>_writing.
+class WritingLearnScreenGolden : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(WritingLearnScreenGolden, MatchesGolden) {
+  const std::string screen = GetParam();
+  const auto out = test_output_dir() / (screen + "_writing.png");
   const CommandResult shot =
-      run_skillcoach("screenshot --screen learn_trial --task writing --size 1280x720 --out '" + out.string() + "'");
+      run_skillcoach("screenshot --screen " + screen + " --task writing --size 1280x720 --out '" + out.string() + "'");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
-  EXPECT_TRUE(matches_golden(read_png(out), "learn/learn_trial_writing"));
+  EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen + "_writing"));
 }
 
-TEST(LearnScreenGolden, WritingDiagnosisMatchesGolden) {
-  // The writing pre-test's diagnosis (quality-aware expertise): letters and connectors with their pictures.
-  const auto out = test_output_dir() / "learn_diagnosis_writing.png";
-  const CommandResult shot =
-      run_skillcoach("screenshot --screen learn_diagnosis --task writing --size 1280x720 --out '" + out.string() + "'");
-  ASSERT_EQ(shot.exit_code, 0) << shot.output;
-  EXPECT_TRUE(matches_golden(read_png(out), "learn/learn_diagnosis_writing"));
-}
+// learn_trial: a drill practice half-way, the ghost ribbon of the stitched drill and the scripted learner's ink
+// over it; learn_diagnosis: the pre-test's diagnosis (quality-aware expertise), letters and connectors pictured.
+INSTANTIATE_TEST_SUITE_P(Writing, WritingLearnScreenGolden, ::testing::Values("learn_trial", "learn_diagnosis"));
 
 INSTANTIATE_TEST_SUITE_P(Trainer, LearnScreenGolden,
                          ::testing::Values("learn_welcome", "learn_instructions", "learn_trial", "learn_diagnosis",
