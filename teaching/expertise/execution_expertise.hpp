@@ -46,8 +46,9 @@ inline constexpr double kExecutionWeight = 1.0;
 // literature, not fitted to the planted-learner tables.
 inline constexpr double kOutlierCut = 3.5;
 inline constexpr double kMadToStandardDeviation = 1.4826;
-// How many references may be taken as the learner's hand: one. Three were tried on the own-hands table
-// (docs/skills.md) and found a letter or two more at one seed of two; one hand waives less.
+// How many references may be taken as the learner's hand: one. Three (each segment scored against the best
+// of them) found three more planted letters at one design seed of two and none at the other (docs/skills.md,
+// "The learner's own hand as the yardstick"); one hand waives less.
 inline constexpr int kLearnerHands = 1;
 
 enum class ExpertiseMode {
