@@ -12,7 +12,11 @@
 //
 // Spec: a reference's steps are in the expert's frame (the task's trace_points compare them with the
 // learner's directly); from_expert pairs each expert step with the reference's steps that do the same
-// thing, in order (dynamic time warping or the like).
+// thing, in order (dynamic time warping or the like): it says which part of the reference does each expert
+// segment. The learner's trace is aligned with each reference directly (execution_trial in
+// teaching/sessions/session_analysis.hpp), not through its alignment with the expert: a learner who writes
+// in a reference's hand matches that reference step by step, and carried through the expert's other shape
+// the pairs went astray (docs/skills.md, "Aligned with the hand itself").
 #include <string>
 #include <vector>
 
@@ -26,11 +30,5 @@ struct ExecutionReference {
   StepSequence steps;         // the expert's trial done this way, in the expert's frame
   StepAlignment from_expert;  // (expert step, reference step) pairs, ascending in both
 };
-
-// The learner's alignment with the expert's steps [begin, end) carried to the reference: every (reference
-// step k, learner step j) such that some expert step i in [begin, end) is paired with k in
-// reference.from_expert and with j in expert_to_learner. Sorted by k, then j; no repeats.
-StepAlignment through_reference(const ExecutionReference& reference, const StepAlignment& expert_to_learner, int begin,
-                                int end);
 
 }  // namespace sc

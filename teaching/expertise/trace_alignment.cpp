@@ -46,6 +46,30 @@ StepAlignment align_traces(const std::vector<TracePoint3>& expert, const std::ve
   return path;
 }
 
+StepAlignment spread_strided(const StepAlignment& coarse, int stride, int expert_length, int learner_length) {
+  if (coarse.empty() || expert_length <= 0 || learner_length <= 0) return {};
+  StepAlignment out;
+  for (const auto& [a, b] : coarse)
+    for (int i = a * stride; i < std::min((a + 1) * stride, expert_length); ++i)
+      out.push_back({i, std::min(b * stride + (i - a * stride), learner_length - 1)});
+  out.push_back({expert_length - 1, learner_length - 1});
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+StepAlignment align_traces_strided(const std::vector<TracePoint3>& expert, const std::vector<TracePoint3>& learner,
+                                   int stride) {
+  stride = std::max(stride, 1);
+  const auto every = [stride](const std::vector<TracePoint3>& points) {
+    std::vector<TracePoint3> out;
+    for (std::size_t t = 0; t < points.size(); t += static_cast<std::size_t>(stride)) out.push_back(points[t]);
+    return out;
+  };
+  return spread_strided(align_traces(every(expert), every(learner)), stride, static_cast<int>(expert.size()),
+                        static_cast<int>(learner.size()));
+}
+
 std::pair<int, int> aligned_span(const StepAlignment& path, int begin, int end) {
   int first = -1, last = -1;
   for (const auto& [e, l] : path) {

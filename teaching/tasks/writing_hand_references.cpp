@@ -35,18 +35,10 @@ StepSequence every_nth_step(const StepSequence& steps) {
   return out;
 }
 
-// align_same_word on every kAlignStride-th step of both, spread back over the steps: expert step i of stride
-// block a goes with the step at the same place in each reference block b that a is paired with.
+// align_same_word on every kAlignStride-th step of both, spread back over the steps (spread_strided).
 StepAlignment coarse_same_word(const StepSequence& expert, const StepSequence& reference) {
-  const StepAlignment coarse = align_same_word(every_nth_step(expert), every_nth_step(reference));
-  StepAlignment out;
-  for (const auto& [a, b] : coarse)
-    for (int i = a * kAlignStride; i < std::min((a + 1) * kAlignStride, expert.length()); ++i)
-      out.push_back({i, std::min(b * kAlignStride + (i - a * kAlignStride), reference.length() - 1)});
-  out.push_back({expert.length() - 1, reference.length() - 1});
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return spread_strided(align_same_word(every_nth_step(expert), every_nth_step(reference)), kAlignStride,
+                        expert.length(), reference.length());
 }
 
 }  // namespace

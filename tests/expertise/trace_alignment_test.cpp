@@ -36,5 +36,23 @@ TEST(TraceAlignment, EmptyTracesGiveNoPath) {
   EXPECT_EQ(aligned_span({}, 0, 3), (std::pair{0, 0}));
 }
 
+TEST(TraceAlignment, AStridedAlignmentOfIdenticalTracesIsStepByStep) {
+  std::vector<double> xs;
+  for (int t = 0; t < 23; ++t) xs.push_back(t);
+  StepAlignment identity;
+  for (int t = 0; t < 23; ++t) identity.push_back({t, t});
+  EXPECT_EQ(align_traces_strided(line(xs), line(xs), 4), identity);
+  EXPECT_EQ(align_traces_strided(line(xs), line(xs), 1), align_traces(line(xs), line(xs)));
+}
+
+TEST(TraceAlignment, AStridedPathIsSpreadOverTheStepsOfEachBlock) {
+  // Blocks of 3: expert block 0 with learner block 0, expert block 1 with learner blocks 1 and 2.
+  EXPECT_EQ(spread_strided({{0, 0}, {1, 1}, {1, 2}}, 3, 5, 8),
+            (StepAlignment{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {3, 6}, {4, 4}, {4, 7}}));
+  // Learner steps past its end are clamped; the last steps always pair.
+  EXPECT_EQ(spread_strided({{0, 0}, {1, 1}}, 3, 6, 4), (StepAlignment{{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 3}, {5, 3}}));
+  EXPECT_TRUE(spread_strided({}, 3, 6, 4).empty());
+}
+
 }  // namespace
 }  // namespace sc

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "teaching/sessions/session_analysis.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/diagnosis.hpp"
 #include "teaching/tasks/writing_execution.hpp"
@@ -65,6 +66,27 @@ std::string diagnosed_hand(int hand_drawer) {
   const Json doc = diagnosis_json(hand_kit(), d);  // what `skillcoach diagnose` prints
   EXPECT_EQ(doc.at("learner_hand"), d.expertise.learner_hand.empty() ? Json(nullptr) : Json(d.expertise.learner_hand));
   return d.expertise.learner_hand;
+}
+
+// A learner who writes a word exactly as reference d does has done every expert segment as that hand does it:
+// each segment scores 0 against reference d. (Until 2026-12-05 the learner's part was found through the
+// learner's alignment with the expert's other shape, and drawer 4's exact word lost up to 0.6 a segment.)
+TEST(WritingHandReferences, AWordWrittenExactlyInAReferencesHandScoresNothingAgainstIt) {
+  for (const std::string word : {"b-a-t-c-", "-e-^a-^-", "^--e-a-^"}) {
+    const StepSequence expert = paper_steps(word);
+    const std::vector<ExecutionReference> refs = hand_kit().execution_references(Json{{"word", word}}, expert);
+    ASSERT_EQ(refs.size(), training_drawers().size());
+    ExpertiseTrial plain;
+    plain.expert = hand_kit().extractor().extract(expert);
+    for (std::size_t d = 0; d < refs.size(); ++d) {
+      const ExecutionTrial t =
+          execution_trial(hand_kit(), Json{{"word", word}}, plain, expert, refs[d].steps, ExpertiseMode::QualityAware);
+      ASSERT_EQ(t.segments.size(), plain.expert.segments.size());
+      for (std::size_t k = 0; k < t.segments.size(); ++k)
+        EXPECT_GT(t.segments[k].reference_rewards.at(d), -0.01)
+            << word << ", drawer " << training_drawers()[d] << ", segment " << k;
+    }
+  }
 }
 
 TEST(WritingHandReferences, ALearnerWritingInATrainingDrawersHandIsScoredAgainstThatHand) {
