@@ -38,7 +38,8 @@ struct LearnOptions {
   std::string lot = "auto";  // parking: auto (study corner for a first session), study-corner, whole-lot
   unsigned long long seed = 20221128;
   int trial_delay_ms = 0;
-  std::string study;  // study mode: the study assigns the condition (and fixes the task); it is not printed
+  int learner_hand = 0;  // writing: the scripted learner's tests in this Omniglot drawer's letters
+  std::string study;     // study mode: the study assigns the condition (and fixes the task); it is not printed
   bool task_given = false, condition_given = false;
 };
 
@@ -60,6 +61,7 @@ void print_plan(const TrainingSession& s) {
   std::printf("plan round %d condition %s trials %d steps %d budget %d (reference: %s) minutes %d\n", s.round(),
               std::string(condition_key(c.condition)).c_str(), c.trials(), c.total_steps(), c.budget_steps,
               budget_reference(s.curriculum_config()).c_str(), s.practice_minutes());
+  if (!s.diagnosis().learner_hand.empty()) std::printf("  learner's hand: %s\n", s.diagnosis().learner_hand.c_str());
   for (std::size_t i = 0; i < c.items.size(); ++i) {
     const PracticeItem& item = c.items[i];
     std::string targets;
@@ -179,6 +181,7 @@ int run(LearnOptions o) {
     if (o.trial_delay_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(o.trial_delay_ms));
   };
   hooks.after_analysis = print_plan;
+  hooks.hand = o.learner_hand;
   while (true) {
     play_scripted_round(*session, hooks);
     const RoundSummary summary = session->summary();
@@ -222,6 +225,9 @@ CommandRunner setup_learn(CLI::App& sub) {
   sub.add_option("--seed", o->seed, "Session seed")->capture_default_str();
   sub.add_option("--trial-delay-ms", o->trial_delay_ms, "Pause after each kept trial (crash tests)")
       ->check(CLI::Range(0, 60000));
+  sub.add_option("--learner-hand", o->learner_hand,
+                 "Writing: the scripted learner writes its tests in this Omniglot drawer's letters (0: the guide's)")
+      ->check(CLI::Range(0, 15));
   return [o, task, condition] {
     o->task_given = task->count() > 0;
     o->condition_given = condition->count() > 0;

@@ -19,6 +19,7 @@ struct ScreenshotOptions {
   std::string size = "1280x720";
   int frames = 3;
   TaskKind task = TaskKind::parking;
+  int learner_hand = 0;
 };
 
 CommandRunner setup_screenshot(CLI::App& sub) {
@@ -30,12 +31,17 @@ CommandRunner setup_screenshot(CLI::App& sub) {
       ->capture_default_str()
       ->check(CLI::Range(2, 600));
   add_task_option(sub, options->task, "Task the trainer's screens show (default parking)");
+  sub.add_option("--learner-hand", options->learner_hand,
+                 "Writing: the scripted learner writes its tests in this Omniglot drawer's letters (0: the guide's)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 15));
   return [options] {
     ScreenshotRequest request;
     request.screen = options->screen;
     std::tie(request.width, request.height) = parse_size(options->size, "--size");
     request.frames = options->frames;
     request.task = options->task;
+    request.learner_hand = options->learner_hand;
     write_png(options->out, render_screen_offscreen(request));
     std::printf("%s\n", options->out.c_str());
     return 0;

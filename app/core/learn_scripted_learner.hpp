@@ -14,6 +14,11 @@ namespace sc {
 
 // skill in [0, 1] (1 = the reference itself). `seed` varies the jitter between attempts.
 Json scripted_attempt(const Json& reference_trial, double skill, std::uint64_t seed, const std::string& device);
+// The same, by a learner who writes in a hand of their own: `hand` 1-15 writes a writing reference's word in
+// that Omniglot drawer's letters (at the drawer's size, from the guide's first point) before the error above;
+// 0, or a parking reference, is scripted_attempt's. Throws InputError for a word that is not classic.
+Json scripted_attempt(const Json& reference_trial, double skill, std::uint64_t seed, const std::string& device,
+                      int hand);
 
 }  // namespace sc
 
@@ -39,6 +44,7 @@ struct ScriptedRunHooks {
   std::function<void(const TrainingSession&, const std::string& kind, const SubmittedTrial&)> after_trial;
   std::function<void(const TrainingSession&)> after_analysis;  // optional: the round's curriculum is made
   ScriptedSkills skills;
+  int hand = 0;  // writing tests (pre-test, evaluation) in this Omniglot drawer's letters; 0: the guide's shapes
 };
 void play_scripted_round(TrainingSession& session, const ScriptedRunHooks& hooks = {});
 

@@ -35,6 +35,7 @@ struct AppServices {
   TaskKind task = TaskKind::parking;
   DeviceChoice device;
   std::shared_ptr<LearnFlow> learn_flow;  // created by the trainer's first screen
+  int screenshot_learner_hand = 0;        // screenshots: the scripted learner's hand (ScriptedRunHooks::hand)
 };
 
 }  // namespace sc

@@ -15,6 +15,7 @@ RgbaImage render_screen_offscreen(const ScreenshotRequest& request) {
   AppServices services;
   services.headless = true;
   services.task = request.task;
+  services.screenshot_learner_hand = request.learner_hand;
   if (request.task == TaskKind::writing) services.device.kind = DeviceKind::mouse_pen;
   ScreenHost host(*context, services, request.screen);
   const FrameInput input;  // no devices, mouse outside: nothing hovered

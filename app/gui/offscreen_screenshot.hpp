@@ -16,6 +16,7 @@ struct ScreenshotRequest {
   int height = 720;
   int frames = 3;                     // clamped to >= 2
   TaskKind task = TaskKind::parking;  // the task the trainer's screens show
+  int learner_hand = 0;               // writing: the scripted learner's tests in this Omniglot drawer's letters
 };
 
 RgbaImage render_screen_offscreen(const ScreenshotRequest& request);

@@ -104,7 +104,23 @@ TEST(LearnCommand, WritingSessionEndToEnd) {
       test::run_skillcoach("learn --task writing --pretest 3 --eval 2 --learner e2e --data-dir " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("summary round 1"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("learner's hand"), std::string::npos) << r.output;  // it writes the guide's shapes
   expect_complete_session(dir, "e2e", "writing");
+}
+
+// A learner writing every letter in an unseen drawer's hand is also measured against the nearest hand the
+// program knows, and the round's plan says which.
+TEST(LearnCommand, AWritingLearnerInAHandOfItsOwnIsToldWhichHandItWasMeasuredAgainst) {
+  const fs::path dir = fresh_dir("writing-hand");
+  const test::CommandResult r = test::run_skillcoach(
+      "learn --task writing --pretest 3 --eval 2 --learner-hand 12 "
+      "--learner hand --data-dir " +
+      dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("  learner's hand: the letters of Omniglot drawer "), std::string::npos) << r.output;
+  const test::CommandResult bad =
+      test::run_skillcoach("learn --task writing --learner-hand 16 --learner hand --data-dir " + dir.string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
 }
 
 // One arm's round as `learn` prints it before practice ("plan round 1 condition ... minutes M") and the

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <ostream>
 #include <string>
 
 #include "engine/render/rgba_image.hpp"
@@ -26,21 +27,38 @@ TEST_P(LearnScreenGolden, MatchesGolden) {
   EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen));
 }
 
-// The writing trainer's screens: `screen` of the writing session, golden learn/<screen>_writing.
-class WritingLearnScreenGolden : public ::testing::TestWithParam<const char*> {};
+// The writing trainer's screens: `screen` of the writing session, golden learn/<screen>_writing; with a
+// learner writing in Omniglot drawer `hand`'s letters, learn/<screen>_writing_hand<hand>.
+struct WritingScreen {
+  const char* screen;
+  int hand;  // the scripted learner's hand (screenshot --learner-hand); 0: the guide's shapes
+};
+
+void PrintTo(const WritingScreen& s, std::ostream* out) { *out << s.screen << ", hand " << s.hand; }
+
+class WritingLearnScreenGolden : public ::testing::TestWithParam<WritingScreen> {};
 
 TEST_P(WritingLearnScreenGolden, MatchesGolden) {
-  const std::string screen = GetParam();
-  const auto out = test_output_dir() / (screen + "_writing.png");
+  const WritingScreen param = GetParam();
+  const std::string name =
+      std::string(param.screen) + "_writing" + (param.hand > 0 ? "_hand" + std::to_string(param.hand) : std::string());
+  const auto out = test_output_dir() / (name + ".png");
   const CommandResult shot =
-      run_skillcoach("screenshot --screen " + screen + " --task writing --size 1280x720 --out '" + out.string() + "'");
+      run_skillcoach(std::string("screenshot --screen ") + param.screen + " --task writing --learner-hand " +
+                     std::to_string(param.hand) + " --size 1280x720 --out '" + out.string() + "'");
   ASSERT_EQ(shot.exit_code, 0) << shot.output;
-  EXPECT_TRUE(matches_golden(read_png(out), "learn/" + screen + "_writing"));
+  EXPECT_TRUE(matches_golden(read_png(out), "learn/" + name));
 }
 
 // learn_trial: a drill practice half-way, the ghost ribbon of the stitched drill and the scripted learner's ink
-// over it; learn_diagnosis: the pre-test's diagnosis (quality-aware expertise), letters and connectors pictured.
-INSTANTIATE_TEST_SUITE_P(Writing, WritingLearnScreenGolden, ::testing::Values("learn_trial", "learn_diagnosis"));
+// over it; learn_diagnosis: the pre-test's diagnosis (quality-aware expertise), letters and connectors pictured;
+// in drawer 12's hand (one the references do not hold): the hand taken, its line and pictures.
+INSTANTIATE_TEST_SUITE_P(Writing, WritingLearnScreenGolden,
+                         ::testing::Values(WritingScreen{"learn_trial", 0}, WritingScreen{"learn_diagnosis", 0},
+                                           WritingScreen{"learn_diagnosis", 12}),
+                         [](const ::testing::TestParamInfo<WritingScreen>& info) {
+                           return std::string(info.param.screen) + "_hand" + std::to_string(info.param.hand);
+                         });
 
 INSTANTIATE_TEST_SUITE_P(Trainer, LearnScreenGolden,
                          ::testing::Values("learn_welcome", "learn_instructions", "learn_trial", "learn_diagnosis",

@@ -6,12 +6,14 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screen.hpp"
 #include "app/gui/screens/learn_flow.hpp"
+#include "app/gui/screens/learn_hand_picture.hpp"
 #include "app/gui/screens/learn_skill_picture.hpp"
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
@@ -87,13 +89,7 @@ class LearnDiagnosisScreen final : public Screen {
         "Each bar is one skill the expert uses; a longer bar means more trouble with it. The "
         "highlighted skills get drills now.");
     if (!kit.extractor_notice().empty()) learn_ui::muted_wrapped(("Note: " + kit.extractor_notice()).c_str());
-    // Quality-aware expertise measured against the learner's own hand as well (execution_expertise.hpp): say so,
-    // or a learner whose letters all differ from the guide wonders why only one of them is called an error.
-    if (!e.learner_hand.empty())
-      learn_ui::muted_wrapped(("Your letters follow a hand of your own, closest to " + e.learner_hand +
-                               ". Each skill was compared with the guide and with that hand; only what is far from "
-                               "both counts as an error.")
-                                  .c_str());
+    const float hand_height = draw_learner_hand(ui, s);
     double worst = 1e-9;
     for (double v : e.expertise) worst = std::max(worst, -v);
     if (worst <= 1e-9)
@@ -110,7 +106,7 @@ class LearnDiagnosisScreen final : public Screen {
     const ImVec2 pic(110 * sc, 56 * sc);
     // The list scrolls when the window is too short for every row, so the button below always shows.
     const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
-    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc);
+    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height);
     ImGui::BeginChild("skill_rows", ImVec2(0, std::min(rows_height, room)), false,
                       rows_height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
     ImDrawList& d = *ImGui::GetWindowDrawList();
@@ -163,8 +159,37 @@ class LearnDiagnosisScreen final : public Screen {
     learn_ui::end_card();
   }
 
+  // Quality-aware expertise measured against the learner's own hand as well (execution_expertise.hpp): say so
+  // and show it, or a learner whose letters all differ from the guide wonders why only one of them is called an
+  // error. Returns the height it took beyond the line of text.
+  float draw_learner_hand(UiContext& ui, const TrainingSession& s) {
+    const std::string& name = s.diagnosis().learner_hand;
+    if (name.empty()) return 0.0f;
+    if (hand_round_ != s.round()) {
+      hand_round_ = s.round();
+      hand_ = learner_hand_picture(s);
+    }
+    learn_ui::muted_wrapped(("Your letters follow a hand of your own, closest to " + name +
+                             (hand_ ? " (below, your first word over the guide and over that hand)" : "") +
+                             ". Each skill was compared with the guide and with that hand; only what is far from "
+                             "both counts as an error.")
+                                .c_str());
+    if (!hand_) return 0.0f;
+    const float sc = ui.ui_scale, gap = 16 * sc;
+    const ImVec2 box((ImGui::GetContentRegionAvail().x - gap) * 0.5f, 80 * sc);
+    const float top = ImGui::GetCursorPosY();
+    ImGui::TextDisabled("Your word over the guide");
+    ImGui::SameLine(box.x + gap + ImGui::GetStyle().WindowPadding.x);
+    ImGui::TextDisabled("Your word over %s", name.c_str());
+    draw_hand_picture(*ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), box, gap, *hand_);
+    ImGui::Dummy(box);
+    return ImGui::GetCursorPosY() - top;
+  }
+
   AppServices& services_;
   LearnFlow& flow_;
+  int hand_round_ = -1;
+  std::optional<HandPicture> hand_;
   int frames_ = 0;
   bool confirm_ = false;
 };

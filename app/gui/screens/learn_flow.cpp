@@ -149,6 +149,7 @@ LearnFlow& learn_flow_for_screenshot(AppServices& services, SessionPhase phase, 
   flow.start(services, false);
   TrainingSession& s = *flow.session();
   ScriptedRunHooks hooks;
+  hooks.hand = services.screenshot_learner_hand;
   hooks.stop = [phase, item](const TrainingSession& t) { return t.phase() == phase && t.item_index() >= item; };
   play_scripted_round(s, hooks);
   return flow;

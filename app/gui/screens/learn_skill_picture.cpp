@@ -118,17 +118,23 @@ std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
 
 }  // namespace
 
-void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {
+void draw_overlay_points(ImDrawList& d, ImVec2 o, ImVec2 size, const std::vector<ImVec2>& learner,
+                         const std::vector<ImVec2>& reference, ImVec2 lo, ImVec2 hi, ImU32 band) {
   d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
-  const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
-  if (learner.size() < 2 || expert.size() < 2) return;
-  BoxMap box{o, size};
-  box.include(learner);
-  box.include(expert);
-  const std::vector<ImVec2> e = thinned(box.map(expert), 5.0f), l = thinned(box.map(learner), 1.5f);
-  d.AddPolyline(e.data(), static_cast<int>(e.size()), IM_COL32(91, 155, 255, 80), ImDrawFlags_None, 7.0f);
+  if (learner.size() < 2 || reference.size() < 2) return;
+  const BoxMap box{o, size, lo, hi};
+  const std::vector<ImVec2> e = thinned(box.map(reference), 5.0f), l = thinned(box.map(learner), 1.5f);
+  d.AddPolyline(e.data(), static_cast<int>(e.size()), band, ImDrawFlags_None, 7.0f);
   d.AddPolyline(l.data(), static_cast<int>(l.size()), IM_COL32(255, 226, 138, 235), ImDrawFlags_None, 2.5f);
   d.AddCircleFilled(l.back(), 4.0f, IM_COL32(255, 226, 138, 235));
+}
+
+void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {
+  const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
+  BoxMap bounds{o, size};
+  bounds.include(learner);
+  bounds.include(expert);
+  draw_overlay_points(d, o, size, learner, expert, bounds.lo, bounds.hi, IM_COL32(91, 155, 255, 80));
 }
 
 }  // namespace sc
