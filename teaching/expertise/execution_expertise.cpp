@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -38,8 +39,23 @@ std::size_t reference_count(const std::vector<ExecutionTrial>& trials) {
   return 0;
 }
 
+// Whether reference r still scores above the expert, summed over all segments, without the skill where it
+// gains most.
+bool wins_without_its_best_skill(const std::vector<ExecutionTrial>& trials, std::size_t r) {
+  std::map<int, double> gain;  // skill -> reference's sum minus expert's
+  for (const ExecutionTrial& t : trials)
+    for (std::size_t k = 0; k < t.segments.size(); ++k)
+      gain[t.trial.expert.segments[k].skill] += t.segments[k].reference_rewards[r] - t.segments[k].reward;
+  double total = 0.0, best = 0.0;
+  for (const auto& [skill, g] : gain) {
+    total += g;
+    best = std::max(best, g);
+  }
+  return total - best > 0.0;
+}
+
 // The references whose scores have the highest means over every segment, at most kLearnerHands of them, each
-// above the expert's own; best first.
+// above the expert's own even without the skill where it gains most; best first.
 std::vector<int> learners_hands(const std::vector<ExecutionTrial>& trials, std::size_t references) {
   std::vector<double> sums(references, 0.0);
   double expert = 0.0;
@@ -53,7 +69,9 @@ std::vector<int> learners_hands(const std::vector<ExecutionTrial>& trials, std::
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return sums[a] > sums[b]; });
   std::vector<int> out;
   for (int r : order)
-    if (static_cast<int>(out.size()) < kLearnerHands && sums[static_cast<std::size_t>(r)] > expert) out.push_back(r);
+    if (static_cast<int>(out.size()) < kLearnerHands && sums[static_cast<std::size_t>(r)] > expert &&
+        wins_without_its_best_skill(trials, static_cast<std::size_t>(r)))
+      out.push_back(r);
   return out;
 }
 

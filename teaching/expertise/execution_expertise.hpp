@@ -27,7 +27,10 @@
 // the learner's segments, if higher than the expert's own, is taken as the learner's hand (kLearnerHands),
 // and each segment's q is the better of its score against the expert and against that hand; then everything
 // above. One hand for the whole pre-test, not one per segment: a letter written wrong in every word still
-// differs from the hand the rest of the learner's letters follow.
+// differs from the hand the rest of the learner's letters follow. And a hand is more than one skill: the
+// reference must score higher than the expert even without the skill where it gains most, or a single letter
+// written in that reference's shape (a fault, if the learner's other letters are the expert's) would make it
+// the yardstick and waive itself (docs/skills.md, "Aligned with the hand itself").
 //
 // Why each target was chosen is its largest penalty: "missing" (Alg. 2's) or "done with a large error"
 // (the execution term), with the trial, the expert's steps and the learner's aligned steps.

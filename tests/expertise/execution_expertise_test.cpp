@@ -197,6 +197,24 @@ TEST(ExecutionExpertise, NoHandIsTakenWhenTheExpertsOwnFitsBetterSoAnotherShapeO
   EXPECT_LT(e.estimate.expertise[2], -0.1);
 }
 
+TEST(ExecutionExpertise, AHandIsMoreThanOneSkillSoOneLetterInAnotherShapeCannotWaiveItself) {
+  // The expert's shapes except skill 2, written in reference 0's shape and far from the expert's, so far that
+  // reference 0 fits better over all segments; without skill 2 it fits worse than the expert.
+  std::vector<ExecutionTrial> trials = own_hand_trials(-0.05, -0.01);
+  for (ExecutionTrial& t : trials) {
+    t.segments[0].reward = -0.05, t.segments[2].reward = -1.5;
+    t.segments[0].reference_rewards[0] = -0.3, t.segments[1].reference_rewards[0] = -0.3;
+  }
+  const ExecutionExpertise e = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware);
+  EXPECT_TRUE(e.learner_hands.empty());
+  ASSERT_FALSE(e.estimate.targets.empty());
+  EXPECT_EQ(e.estimate.targets[0], 2);
+  EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
+  // Done in reference 0's shape on two skills, it is the learner's hand.
+  for (ExecutionTrial& t : trials) t.segments[1].reward = -1.5, t.segments[1].reference_rewards[0] = -0.01;
+  EXPECT_EQ(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware).learner_hands, std::vector<int>{0});
+}
+
 TEST(ExecutionExpertise, RefusesSegmentsScoredAgainstDifferentReferences) {
   std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.5);
   trials[1].segments[2].reference_rewards.pop_back();
