@@ -52,10 +52,10 @@ TEST_P(WritingLearnScreenGolden, MatchesGolden) {
 
 // learn_trial: a drill practice half-way, the ghost ribbon of the stitched drill and the scripted learner's ink
 // over it; learn_diagnosis: the pre-test's diagnosis (quality-aware expertise), letters and connectors pictured;
-// in drawer 12's hand (one the references do not hold): the hand taken, its line and pictures.
+// in drawer 13's hand (one the references do not hold): the hand taken, its line and pictures.
 INSTANTIATE_TEST_SUITE_P(Writing, WritingLearnScreenGolden,
                          ::testing::Values(WritingScreen{"learn_trial", 0}, WritingScreen{"learn_diagnosis", 0},
-                                           WritingScreen{"learn_diagnosis", 12}),
+                                           WritingScreen{"learn_diagnosis", 13}),
                          [](const ::testing::TestParamInfo<WritingScreen>& info) {
                            return std::string(info.param.screen) + "_hand" + std::to_string(info.param.hand);
                          });
