@@ -141,10 +141,10 @@ std::string augmented_description(int count, int copies, std::uint64_t seed, con
          "), letters by " +
          (a.drawers == AugmentDrawers::PaperAndTraining ? "the paper's and Omniglot drawers 1-10"
                                                         : "the paper's drawer") +
-         ", plus " + std::to_string(copies) + " perturbed copies each (wobble <= 12 px, affine <= 0.12" +
-         (a.mouse ? ", mouse-sampled" : "") + ")" +
-         (a.other_hands > 0 ? " and " + std::to_string(a.other_hands) +
-                                  " copies by drawers 1-10 aligned to them (writing_other_hand.hpp),"
+         ", plus " + std::to_string(copies) + (copies == 1 ? " perturbed copy" : " perturbed copies") +
+         " each (wobble <= 12 px, affine <= 0.12" + (a.mouse ? ", mouse-sampled" : "") + ")" +
+         (a.other_hands > 0 ? " and " + std::to_string(a.other_hands) + (a.other_hands == 1 ? " copy" : " copies") +
+                                  " by drawers 1-10 aligned to them (writing_other_hand.hpp),"
                             : "") +
          " with the clean words' repetition boundaries";
 }
