@@ -85,7 +85,7 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
                   "scores. ")
     << (d.matches_stored
             ? "The recomputation matches the stored diagnosis."
-            : "<b>The recomputation differs from the stored diagnosis</b> (the model or data changed since).")
+            : "<b>The recomputation differs from the stored diagnosis</b> (the model, the data or the diagnosis method changed since).")
     << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed or done "
        "badly in "
        "pre-test trials (&Delta;)</th></tr>\n";

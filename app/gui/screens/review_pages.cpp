@@ -260,7 +260,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
           d->learner_hand.c_str());
     ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
                        d->matches_stored ? "Matches the stored diagnosis."
-                                         : "Differs from the stored diagnosis (model or data changed since).");
+                                         : "Differs from the stored diagnosis (the model, the data or the diagnosis method changed since).");
     for (const auto& skill : d->skills) {
       ImGui::Separator();
       const ImVec2 at = ImGui::GetCursorScreenPos();
