@@ -67,6 +67,8 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
   out.mode = review.kit().learners_expertise();
   out.pretest_trials = static_cast<int>(pretest.size());
   out.learner_hand = now.learner_hand;
+  out.hand_traces = learner_hand_traces(review.kit(), Json::parse(pretest.front()->record.scenario_json),
+                                        tests.front().expert_steps, tests.front().trial, now.learner_hand);
   out.recomputed_targets = now.targets;
   out.stored_targets = stored_targets;
   out.matches_stored = now.num_skills() == before.num_skills() && stored_targets == now.targets;

@@ -5,11 +5,13 @@
 // the pre-test trials that missed it (or, quality-aware, did it badly) are listed with their Δ
 // (Δ = −r / j: r the trial's reward, j the skill's position in the expert's sequence; done badly: −q / j). The
 // recomputed expertise is compared with the stored diagnosis, so a model or extractor change since the session shows.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/review/trial_review.hpp"
+#include "teaching/sessions/learner_hand_traces.hpp"
 
 namespace sc::review {
 
@@ -39,6 +41,7 @@ struct DiagnosisExplanation {
   std::string extractor;        // the stored diagnosis's extractor name
   ExpertiseMode mode = ExpertiseMode::Alg2;  // the kit's learners_expertise(), with which it is recomputed
   std::string learner_hand;  // quality-aware: the hand the learner was also scored against (empty: the expert's)
+  std::optional<LearnerHandTraces> hand_traces;  // with a hand: the first pre-test trial, its guide and that hand
 };
 
 // Throws InputError when the session has no pre-test trials or no round-1 diagnosis.

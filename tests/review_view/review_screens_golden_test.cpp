@@ -25,5 +25,17 @@ TEST_P(ReviewScreenGolden, MatchesGolden) {
 
 INSTANTIATE_TEST_SUITE_P(Review, ReviewScreenGolden, ::testing::Values("review", "review_trial", "review_expertise"));
 
+// A writing learner in unseen drawer 13's letters: "diagnosis explained" names the hand it was also scored against
+// and pictures its first pre-test word over the guide and over that hand.
+TEST(ReviewScreenGolden, TheDiagnosisOfAWritingLearnerInAHandOfItsOwnPicturesTheHand) {
+  const auto out = test_output_dir() / "review_expertise_writing_hand13.png";
+  const CommandResult shot = run_skillcoach(
+      "screenshot --screen review_expertise --task writing --learner-hand 13 "
+      "--size 1280x720 --out '" +
+      out.string() + "'");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  EXPECT_TRUE(matches_golden(read_png(out), "review/screen_review_expertise_writing_hand13"));
+}
+
 }  // namespace
 }  // namespace sc::test

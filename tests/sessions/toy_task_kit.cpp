@@ -189,4 +189,12 @@ double ToyTaskKit::execution_reward(const StepSequence& expert, const StepSequen
 
 std::string ToyTaskKit::describe_skill(int skill) const { return "gesture " + std::to_string(skill); }
 
+std::vector<ExecutionReference> ToyTaskKit::execution_references(const Json&, const StepSequence& expert) const {
+  if (!give_references) return {};
+  ExecutionReference r{"the double-length hand", expert, {}};
+  for (float& v : r.steps.states) v *= 2.0f;
+  for (int t = 0; t < expert.length(); ++t) r.from_expert.push_back({t, t});
+  return {r};
+}
+
 }  // namespace sc::test

@@ -44,6 +44,9 @@ class ToyTaskKit final : public TaskKit {
   ExpertiseMode learners_expertise() const override { return expertise_; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;
+  // With `give_references`: one reference, "the double-length hand", the expert's positions doubled, step by step.
+  std::vector<ExecutionReference> execution_references(const Json& scenario, const StepSequence& expert) const override;
+  bool give_references = false;
 
   mutable int fresh_calls = 0;  // how often fresh_scenarios ran (tests check caching)
 

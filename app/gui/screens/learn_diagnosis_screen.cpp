@@ -175,21 +175,15 @@ class LearnDiagnosisScreen final : public Screen {
                              "both counts as an error.")
                                 .c_str());
     if (!hand_) return 0.0f;
-    const float sc = ui.ui_scale, gap = 16 * sc;
-    const ImVec2 box((ImGui::GetContentRegionAvail().x - gap) * 0.5f, 80 * sc);
     const float top = ImGui::GetCursorPosY();
-    ImGui::TextDisabled("Your word over the guide");
-    ImGui::SameLine(box.x + gap + ImGui::GetStyle().WindowPadding.x);
-    ImGui::TextDisabled("Your word over %s", name.c_str());
-    draw_hand_picture(*ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), box, gap, *hand_);
-    ImGui::Dummy(box);
+    hand_picture_row(*hand_, "Your", name, 80 * ui.ui_scale, 16 * ui.ui_scale);
     return ImGui::GetCursorPosY() - top;
   }
 
   AppServices& services_;
   LearnFlow& flow_;
   int hand_round_ = -1;
-  std::optional<HandPicture> hand_;
+  std::optional<LearnerHandTraces> hand_;
   int frames_ = 0;
   bool confirm_ = false;
 };

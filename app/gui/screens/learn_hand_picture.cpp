@@ -1,16 +1,16 @@
 #include "app/gui/screens/learn_hand_picture.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "app/gui/screens/learn_skill_picture.hpp"
 
 namespace sc {
 namespace {
 
-std::vector<ImVec2> xy_of(const TaskKit& kit, const StepSequence& steps) {
+std::vector<ImVec2> to_imvec(const std::vector<std::pair<double, double>>& points) {
   std::vector<ImVec2> out;
-  for (const TracePoint3& p : kit.trace_points(steps))
-    out.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
+  for (const auto& [x, y] : points) out.emplace_back(static_cast<float>(x), static_cast<float>(y));
   return out;
 }
 
@@ -23,27 +23,34 @@ void include(ImVec2& lo, ImVec2& hi, const std::vector<ImVec2>& points) {
 
 }  // namespace
 
-std::optional<HandPicture> learner_hand_picture(const TrainingSession& session) {
-  const std::string& name = session.diagnosis().learner_hand;
-  if (name.empty() || session.pretest_trials().empty() || session.pretest_pool_indices().empty()) return std::nullopt;
+std::optional<LearnerHandTraces> learner_hand_picture(const TrainingSession& session) {
+  if (session.pretest_trials().empty() || session.pretest_pool_indices().empty()) return std::nullopt;
   const TaskKit& kit = session.kit();
   const ExpertDemo& expert = kit.expert_pool().at(static_cast<std::size_t>(session.pretest_pool_indices().front()));
-  const std::vector<ExecutionReference> references = kit.execution_references(expert.scenario, expert.steps);
-  const auto hand = std::find_if(references.begin(), references.end(),
-                                 [&name](const ExecutionReference& r) { return r.name == name; });
-  if (hand == references.end()) return std::nullopt;
-  return HandPicture{xy_of(kit, kit.steps_of(session.pretest_trials().front())), xy_of(kit, expert.steps),
-                     xy_of(kit, hand->steps)};
+  return learner_hand_traces(kit, expert.scenario, expert.steps, session.pretest_trials().front(),
+                             session.diagnosis().learner_hand);
 }
 
-void draw_hand_picture(ImDrawList& d, ImVec2 o, ImVec2 box, float gap, const HandPicture& picture) {
+void draw_hand_picture(ImDrawList& d, ImVec2 o, ImVec2 box, float gap, const LearnerHandTraces& traces) {
+  const std::vector<ImVec2> learner = to_imvec(traces.learner), guide = to_imvec(traces.guide),
+                            hand = to_imvec(traces.hand);
   ImVec2 lo(1e30f, 1e30f), hi(-1e30f, -1e30f);
-  include(lo, hi, picture.learner);
-  include(lo, hi, picture.guide);
-  include(lo, hi, picture.hand);
-  draw_overlay_points(d, o, box, picture.learner, picture.guide, lo, hi, IM_COL32(91, 155, 255, 80));
-  draw_overlay_points(d, ImVec2(o.x + box.x + gap, o.y), box, picture.learner, picture.hand, lo, hi,
-                      IM_COL32(120, 220, 170, 90));
+  include(lo, hi, learner);
+  include(lo, hi, guide);
+  include(lo, hi, hand);
+  draw_overlay_points(d, o, box, learner, guide, lo, hi, IM_COL32(91, 155, 255, 80));
+  draw_overlay_points(d, ImVec2(o.x + box.x + gap, o.y), box, learner, hand, lo, hi, IM_COL32(120, 220, 170, 90));
+}
+
+void hand_picture_row(const LearnerHandTraces& traces, const std::string& whose, const std::string& hand,
+                      float box_height, float gap) {
+  const ImVec2 box((ImGui::GetContentRegionAvail().x - gap) * 0.5f, box_height);
+  const float left = ImGui::GetCursorPosX();
+  ImGui::TextDisabled("%s word over the guide", whose.c_str());
+  ImGui::SameLine(left + box.x + gap);
+  ImGui::TextDisabled("%s word over %s", whose.c_str(), hand.c_str());
+  draw_hand_picture(*ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), box, gap, traces);
+  ImGui::Dummy(box);
 }
 
 }  // namespace sc

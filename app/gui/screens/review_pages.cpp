@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "app/gui/navigator.hpp"
+#include "app/gui/screens/learn_hand_picture.hpp"
 #include "engine/review_view/review_palette.hpp"
 
 namespace sc {
@@ -258,9 +259,13 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
           "The learner's letters follow a hand of their own, closest to %s: each part was also scored "
           "against that hand, and q is the better of the two scores.",
           d->learner_hand.c_str());
-    ImGui::TextColored(d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
-                       d->matches_stored ? "Matches the stored diagnosis."
-                                         : "Differs from the stored diagnosis (the model, the data or the diagnosis method changed since).");
+    if (d->hand_traces)
+      hand_picture_row(*d->hand_traces, "Trial 1's", d->learner_hand, 64 * ui.ui_scale, 12 * ui.ui_scale);
+    ImGui::TextColored(
+        d->matches_stored ? ImVec4(0.45f, 0.85f, 0.75f, 1) : ImVec4(1.0f, 0.6f, 0.4f, 1), "%s",
+        d->matches_stored
+            ? "Matches the stored diagnosis."
+            : "Differs from the stored diagnosis (the model, the data or the diagnosis method changed since).");
     for (const auto& skill : d->skills) {
       ImGui::Separator();
       const ImVec2 at = ImGui::GetCursorScreenPos();
