@@ -42,14 +42,14 @@ std::vector<ExpertiseTrial> expertise_trials(const TaskKit& kit, const std::vect
 ExecutionTrial execution_trial(const TaskKit& kit, const Json& scenario, ExpertiseTrial trial,
                                const StepSequence& expert, const StepSequence& learner, ExpertiseMode mode) {
   ExecutionTrial out{std::move(trial), {}, {}};
-  const StepAlignment path = align_traces(kit.trace_points(expert), kit.trace_points(learner));
+  const std::vector<TracePoint3> learner_points = kit.trace_points(learner);
+  const StepAlignment path = align_traces(kit.trace_points(expert), learner_points);
   const std::vector<ExecutionReference> references = mode == ExpertiseMode::QualityAware
                                                          ? kit.execution_references(scenario, expert)
                                                          : std::vector<ExecutionReference>{};
   // Each reference is aligned with the learner's trace directly: a learner writing in a reference's hand matches
   // it step by step, where the learner's alignment with the expert (another shape) carried over would not.
   std::vector<StepAlignment> reference_paths;
-  const std::vector<TracePoint3> learner_points = kit.trace_points(learner);
   for (const ExecutionReference& r : references) {
     out.reference_names.push_back(r.name);
     const std::vector<TracePoint3> points = kit.trace_points(r.steps);
