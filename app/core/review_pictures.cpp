@@ -111,4 +111,22 @@ std::vector<std::string> before_after_lines(const review::BeforeAfterGroup& grou
   return lines;
 }
 
+review_view::HandOverlay hand_overlay(const LearnerHandTraces& traces) {
+  const auto points = [](const std::vector<std::pair<double, double>>& xy) {
+    std::vector<ImVec2> out;
+    for (const auto& [x, y] : xy) out.emplace_back(static_cast<float>(x), static_cast<float>(y));
+    return out;
+  };
+  return {points(traces.learner), points(traces.guide), points(traces.hand)};
+}
+
+review_view::HandImageText hand_image_text(const std::string& learner, const std::string& hand) {
+  return {learner + "'s own hand",
+          {"Quality-aware expertise took " + hand +
+           " as this learner's hand: each part of the pre-test was scored against the guide and against that hand, "
+           "and only what is far from both counted as an error."},
+          "The first pre-test word over the guide",
+          "The same word over " + hand};
+}
+
 }  // namespace sc

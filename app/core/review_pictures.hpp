@@ -4,12 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "engine/review_view/overlay_points.hpp"
 #include "engine/review_view/review_chart.hpp"
 #include "engine/review_view/review_images.hpp"
 #include "engine/review_view/review_picture.hpp"
 #include "teaching/review/before_after.hpp"
 #include "teaching/review/expertise_rounds.hpp"
 #include "teaching/review/trial_review.hpp"
+#include "teaching/sessions/learner_hand_traces.hpp"
 
 namespace sc {
 
@@ -24,5 +26,8 @@ review_view::BeforeAfterPicture before_after_picture(const review::BeforeAfterGr
                                                      const std::vector<review::TrialReview>& trials);
 std::vector<std::string> before_after_lines(const review::BeforeAfterGroup& group,
                                             const std::vector<review::TrialReview>& trials);
+review_view::HandOverlay hand_overlay(const LearnerHandTraces& traces);
+// `hand`: the reference's name ("the letters of Omniglot drawer 7").
+review_view::HandImageText hand_image_text(const std::string& learner, const std::string& hand);
 
 }  // namespace sc

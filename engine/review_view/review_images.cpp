@@ -1,6 +1,7 @@
 #include "engine/review_view/review_images.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 #include "engine/render/imgui_layer.hpp"
 #include "engine/render/renderer2d.hpp"
@@ -123,6 +124,38 @@ RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture
         dl.AddText({x + box_w * 0.5f + fs * 2.2f, y}, kCaptionText, after.c_str());
         y += fs * 1.3f;
         text_lines(dl, {x, y}, lines, box_w - 16.0f * s);
+      });
+}
+
+RgbaImage render_hand_image(GlContext& context, const HandOverlay& overlay, const HandImageText& text, int width,
+                            int height) {
+  return render(
+      context, width, height, [](Renderer2D&) {},
+      [&](ImGuiLayer& imgui) {
+        ImDrawList& dl = *ImGui::GetBackgroundDrawList();
+        const float s = imgui.scale(), fs = ImGui::GetFontSize();
+        const float x = 16.0f * s, wrap = static_cast<float>(width) - 32.0f * s;
+        float y = 14.0f * s;
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, text.title.c_str(), nullptr, wrap);
+        y += fs * 1.5f;
+        y = text_lines(dl, {x, y}, text.lines, wrap) + 6.0f * s;
+        // The legend: what each line is.
+        float lx = x;
+        for (const auto& [color, width_px, label] :
+             {std::tuple{kOverlayLearner, 2.5f, "the learner's word"}, std::tuple{kOverlayGuide, 7.0f, "the guide"},
+              std::tuple{kOverlayHand, 7.0f, "the hand"}}) {
+          dl.AddLine({lx, y + fs * 0.5f}, {lx + fs * 1.6f, y + fs * 0.5f}, color, width_px * s);
+          dl.AddText({lx + fs * 2.1f, y}, kCaptionText, label);
+          lx += fs * 2.1f + ImGui::CalcTextSize(label).x + fs * 1.6f;
+        }
+        y += fs * 1.6f;
+        const float box_h = (static_cast<float>(height) - y - 16.0f * s) * 0.5f - fs * 1.4f;
+        const ImVec2 box(wrap, std::max(box_h, 40.0f * s));
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, text.guide_caption.c_str());
+        const ImVec2 first(x, y + fs * 1.3f);
+        y = first.y + box.y + 8.0f * s;
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, text.hand_caption.c_str());
+        draw_hand_overlay(dl, first, {x, y + fs * 1.3f}, box, overlay);
       });
 }
 

@@ -6,6 +6,7 @@
 
 #include "engine/render/gl_context.hpp"
 #include "engine/render/rgba_image.hpp"
+#include "engine/review_view/overlay_points.hpp"
 #include "engine/review_view/review_chart.hpp"
 #include "engine/review_view/review_picture.hpp"
 
@@ -27,6 +28,17 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
                              int height);
 RgbaImage render_before_after_image(GlContext& context, const BeforeAfterPicture& picture, const std::string& title,
                                     const std::vector<std::string>& lines, int width, int height);
+
+struct HandImageText {
+  std::string title;               // "Ada's own hand"
+  std::vector<std::string> lines;  // what the pictures show and why
+  std::string guide_caption;       // "The first pre-test word over the guide"
+  std::string hand_caption;        // "The same word over the letters of Omniglot drawer 7"
+};
+
+// The learner's word over the guide above the same word over the hand taken, at one scale.
+RgbaImage render_hand_image(GlContext& context, const HandOverlay& overlay, const HandImageText& text, int width,
+                            int height);
 // Height follows the number of skills and rounds.
 RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart& chart, const std::string& title,
                                        int width);

@@ -83,10 +83,12 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
             : "The learner's letters follow a hand of their own, closest to " + html_escape(d.learner_hand) +
                   ": each part was also scored against that hand, and q is the better of the two "
                   "scores. ")
-    << (d.matches_stored
-            ? "The recomputation matches the stored diagnosis."
-            : "<b>The recomputation differs from the stored diagnosis</b> (the model, the data or the diagnosis method changed since).")
-    << "</p>\n<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed or done "
+    << (d.matches_stored ? "The recomputation matches the stored diagnosis."
+                         : "<b>The recomputation differs from the stored diagnosis</b> (the model, the data or the "
+                           "diagnosis method changed since).")
+    << "</p>\n";
+  if (s.hand_picture) image(h, *s.hand_picture);
+  h << "<table><tr><th>Targeted skill</th><th>Expertise E</th><th>Used by the expert</th><th>Missed or done "
        "badly in "
        "pre-test trials (&Delta;)</th></tr>\n";
   for (const auto& skill : d.skills) {

@@ -112,6 +112,36 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
   EXPECT_NE(html.find("Missed or done badly in pre-test trials"), std::string::npos);
 }
 
+// A writing learner in unseen drawer 13's letters is given a training drawer's hand; the report pictures its first
+// pre-test word over the guide and over that hand beside the diagnosis, as the Review screen does. The parking
+// fixture above takes no hand, so its report has no such picture.
+TEST(ReportCommandHand, AWritingLearnerInAHandOfItsOwnHasTheHandPictured) {
+  const fs::path data = test::scratch_path("review", "report_hand_data"),
+                 out = test::scratch_path("review", "report_hand");
+  fs::remove_all(data);
+  fs::remove_all(out);
+  const test::CommandResult learn = test::run_skillcoach(
+      "learn --task writing --pretest 3 --eval 2 --learner-hand 13 --learner Ada --data-dir " + quoted(data));
+  ASSERT_EQ(learn.exit_code, 0) << learn.output;
+  const auto hand_line = learn.output.find("  learner's hand: ");
+  ASSERT_NE(hand_line, std::string::npos) << learn.output;
+  const std::string hand =
+      learn.output.substr(hand_line + 18, learn.output.find('\n', hand_line) - hand_line - 18);  // "the letters of ..."
+
+  const test::CommandResult run =
+      test::run_skillcoach("report --data-dir " + quoted(data) + " --learner Ada --out " + quoted(out));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const RgbaImage image = read_png(out / "session1_hand.png");
+  EXPECT_EQ(image.width, 1280);
+  EXPECT_EQ(image.height, 720);
+  const std::string html = test::read_bytes(out / "report.html");
+  const auto diagnosis = html.find("<h3>Diagnosis explained</h3>"), picture = html.find("(session1_hand.png)");
+  ASSERT_NE(picture, std::string::npos);
+  EXPECT_LT(diagnosis, picture);
+  EXPECT_LT(picture, html.find("<th>Targeted skill</th>"));  // beside the sentence naming the hand, above the table
+  EXPECT_NE(html.find("closest to " + hand), std::string::npos) << hand;
+}
+
 TEST_F(ReportCommand, OneSessionOnly) {
   const fs::path out = test::scratch_path("review", "report_one");
   fs::remove_all(out);

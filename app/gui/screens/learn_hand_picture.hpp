@@ -3,8 +3,6 @@
 // reference's name ("the letters of Omniglot drawer 4") tells a learner little; their pre-test word drawn over
 // the guide and over that hand, at one scale, shows at a glance why their letters were measured against both
 // (teaching/sessions/learner_hand_traces.hpp).
-#include <imgui.h>
-
 #include <optional>
 #include <string>
 
@@ -15,9 +13,6 @@ namespace sc {
 
 // The session's first pre-test trial, guide and hand; nullopt when the diagnosis took no hand.
 std::optional<LearnerHandTraces> learner_hand_picture(const TrainingSession& session);
-
-// Two boxes of `box` each, `gap` apart: the learner's path over the guide, then over the hand (one scale).
-void draw_hand_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 box, float gap, const LearnerHandTraces& traces);
 
 // Captions above both boxes ("<whose> word over the guide", "... over <hand>"), the boxes filling the window's
 // width, then the cursor below them.

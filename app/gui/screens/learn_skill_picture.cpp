@@ -6,6 +6,7 @@
 #include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_trial.hpp"
 #include "engine/parking_view/parking_path.hpp"
+#include "engine/review_view/overlay_points.hpp"
 #include "engine/writing/writing_trial.hpp"
 
 namespace sc {
@@ -31,27 +32,6 @@ std::vector<ImVec2> trial_points(const Json& trial) {
   }
   return points;
 }
-
-// Maps world points into the box (uniform scale, centred) given their joint bounds.
-struct BoxMap {
-  ImVec2 o, size, lo{1e30f, 1e30f}, hi{-1e30f, -1e30f};
-  void include(const std::vector<ImVec2>& points) {
-    for (const ImVec2& p : points) {
-      lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
-      hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
-    }
-  }
-  std::vector<ImVec2> map(const std::vector<ImVec2>& points) const {
-    const float pad = 10.0f;
-    const float scale =
-        std::min((size.x - 2 * pad) / std::max(1e-3f, hi.x - lo.x), (size.y - 2 * pad) / std::max(1e-3f, hi.y - lo.y));
-    std::vector<ImVec2> out;
-    for (const ImVec2& p : points)
-      out.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,
-                       o.y + size.y * 0.5f + (p.y - (lo.y + hi.y) * 0.5f) * scale);
-    return out;
-  }
-};
 
 Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
   Polyline out;
@@ -97,44 +77,12 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
 }
 
-namespace {
-
-// Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel,
-// which shrinks to a fraction of a pixel in a thumbnail; a thick polyline through such zigzags draws a
-// miter spike at every one of them (the expert's word looked hairy).
-std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
-  std::vector<ImVec2> out;
-  for (const ImVec2& p : points) {
-    if (!out.empty()) {
-      const float dx = p.x - out.back().x, dy = p.y - out.back().y;
-      if (dx * dx + dy * dy < spacing * spacing) continue;
-    }
-    out.push_back(p);
-  }
-  if (!points.empty() && (out.size() < 2 || out.back().x != points.back().x || out.back().y != points.back().y))
-    out.push_back(points.back());
-  return out;
-}
-
-}  // namespace
-
-void draw_overlay_points(ImDrawList& d, ImVec2 o, ImVec2 size, const std::vector<ImVec2>& learner,
-                         const std::vector<ImVec2>& reference, ImVec2 lo, ImVec2 hi, ImU32 band) {
-  d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
-  if (learner.size() < 2 || reference.size() < 2) return;
-  const BoxMap box{o, size, lo, hi};
-  const std::vector<ImVec2> e = thinned(box.map(reference), 5.0f), l = thinned(box.map(learner), 1.5f);
-  d.AddPolyline(e.data(), static_cast<int>(e.size()), band, ImDrawFlags_None, 7.0f);
-  d.AddPolyline(l.data(), static_cast<int>(l.size()), IM_COL32(255, 226, 138, 235), ImDrawFlags_None, 2.5f);
-  d.AddCircleFilled(l.back(), 4.0f, IM_COL32(255, 226, 138, 235));
-}
-
 void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {
   const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
-  BoxMap bounds{o, size};
+  review_view::OverlayBounds bounds;
   bounds.include(learner);
   bounds.include(expert);
-  draw_overlay_points(d, o, size, learner, expert, bounds.lo, bounds.hi, IM_COL32(91, 155, 255, 80));
+  review_view::draw_overlay_points(d, o, size, learner, expert, bounds, review_view::kOverlayGuide);
 }
 
 }  // namespace sc

@@ -17,9 +17,5 @@ void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, con
 // over it in yellow, both fitted into the box together.
 void draw_overlay_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
                           const Json& expert_trial);
-// The same from points in task coordinates: `reference` as a wide band of colour `band`, `learner` over it,
-// both mapped by the bounds [lo, hi] (so pictures side by side can share one scale).
-void draw_overlay_points(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const std::vector<ImVec2>& learner,
-                         const std::vector<ImVec2>& reference, ImVec2 lo, ImVec2 hi, ImU32 band);
 
 }  // namespace sc

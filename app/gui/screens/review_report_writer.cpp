@@ -100,6 +100,12 @@ class ReportWriter {
     } catch (const InputError& e) {
       report.diagnosis_note = e.what();
     }
+    if (report.diagnosis && report.diagnosis->hand_traces)
+      report.hand_picture =
+          save(review_view::render_hand_image(context(), hand_overlay(*report.diagnosis->hand_traces),
+                                              hand_image_text(row.learner, report.diagnosis->learner_hand),
+                                              request_.image_width, request_.image_height),
+               prefix + "hand.png", "The learner's own hand");
     result_.trials += static_cast<int>(trials.size());
     return report;
   }

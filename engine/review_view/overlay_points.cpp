@@ -1,0 +1,86 @@
+#include "engine/review_view/overlay_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sc::review_view {
+namespace {
+
+constexpr float kPad = 10.0f;
+
+std::vector<ImVec2> mapped(const std::vector<ImVec2>& points, ImVec2 o, ImVec2 size, const OverlayBounds& b) {
+  const float scale = std::min((size.x - 2 * kPad) / std::max(1e-3f, b.hi.x - b.lo.x),
+                               (size.y - 2 * kPad) / std::max(1e-3f, b.hi.y - b.lo.y));
+  std::vector<ImVec2> out;
+  for (const ImVec2& p : points)
+    out.emplace_back(o.x + size.x * 0.5f + (p.x - (b.lo.x + b.hi.x) * 0.5f) * scale,
+                     o.y + size.y * 0.5f + (p.y - (b.lo.y + b.hi.y) * 0.5f) * scale);
+  return out;
+}
+
+// Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel,
+// which shrinks to a fraction of a pixel in a thumbnail; a thick polyline through such zigzags draws a
+// miter spike at every one of them (the expert's word looked hairy).
+std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
+  std::vector<ImVec2> out;
+  for (const ImVec2& p : points) {
+    if (!out.empty()) {
+      const float dx = p.x - out.back().x, dy = p.y - out.back().y;
+      if (dx * dx + dy * dy < spacing * spacing) continue;
+    }
+    out.push_back(p);
+  }
+  if (!points.empty() && (out.size() < 2 || out.back().x != points.back().x || out.back().y != points.back().y))
+    out.push_back(points.back());
+  return out;
+}
+
+// A thick polyline, split where it turns back sharply: ImGui joins segments with unlimited miters, which at a
+// pen reversing its direction draw a long spike; the pieces' ends overlap instead.
+void thick_path(ImDrawList& d, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
+  constexpr float kSharpTurnCosine = -0.3f;  // a turn of more than ~107 degrees
+  std::size_t begin = 0;
+  for (std::size_t i = 1; i + 1 <= points.size(); ++i) {
+    bool split = i + 1 == points.size();
+    if (!split) {
+      const ImVec2 a(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y),
+          b(points[i + 1].x - points[i].x, points[i + 1].y - points[i].y);
+      const float norms = std::sqrt((a.x * a.x + a.y * a.y) * (b.x * b.x + b.y * b.y));
+      split = norms > 0.0f && (a.x * b.x + a.y * b.y) / norms < kSharpTurnCosine;
+    }
+    if (!split) continue;
+    d.AddPolyline(points.data() + begin, static_cast<int>(i - begin + 1), color, ImDrawFlags_None, thickness);
+    begin = i;
+  }
+}
+
+}  // namespace
+
+void OverlayBounds::include(const std::vector<ImVec2>& points) {
+  for (const ImVec2& p : points) {
+    lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
+    hi = ImVec2(std::max(hi.x, p.x), std::max(hi.y, p.y));
+  }
+}
+
+void draw_overlay_points(ImDrawList& d, ImVec2 o, ImVec2 size, const std::vector<ImVec2>& learner,
+                         const std::vector<ImVec2>& reference, const OverlayBounds& bounds, ImU32 band) {
+  d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
+  if (learner.size() < 2 || reference.size() < 2) return;
+  const std::vector<ImVec2> e = thinned(mapped(reference, o, size, bounds), 5.0f),
+                            l = thinned(mapped(learner, o, size, bounds), 1.5f);
+  thick_path(d, e, band, 7.0f);
+  thick_path(d, l, kOverlayLearner, 2.5f);
+  d.AddCircleFilled(l.back(), 4.0f, kOverlayLearner);
+}
+
+void draw_hand_overlay(ImDrawList& d, ImVec2 first, ImVec2 second, ImVec2 box, const HandOverlay& overlay) {
+  OverlayBounds bounds;
+  bounds.include(overlay.learner);
+  bounds.include(overlay.guide);
+  bounds.include(overlay.hand);
+  draw_overlay_points(d, first, box, overlay.learner, overlay.guide, bounds, kOverlayGuide);
+  draw_overlay_points(d, second, box, overlay.learner, overlay.hand, bounds, kOverlayHand);
+}
+
+}  // namespace sc::review_view

@@ -1,0 +1,35 @@
+#pragma once
+// A learner's path over a reference path, in ImGui draw lists, fitted into a box: the trainer's before/after and
+// hand pictures (app/gui/screens) and the report's hand picture (review_images.hpp) draw the same. Points are in
+// the task's own coordinates; pictures side by side share one scale by sharing their bounds.
+#include <imgui.h>
+
+#include <vector>
+
+namespace sc::review_view {
+
+inline constexpr ImU32 kOverlayLearner = IM_COL32(255, 226, 138, 235);  // the learner's path (yellow)
+inline constexpr ImU32 kOverlayGuide = IM_COL32(91, 155, 255, 80);      // the expert's path or the guide (blue band)
+inline constexpr ImU32 kOverlayHand = IM_COL32(120, 220, 170, 90);      // the learner's hand (green band)
+
+// The joint bounds of several point sets.
+struct OverlayBounds {
+  ImVec2 lo{1e30f, 1e30f}, hi{-1e30f, -1e30f};
+  void include(const std::vector<ImVec2>& points);
+};
+
+// A dark box, `reference` over it as a wide band of colour `band`, `learner` over that (mapped by `bounds`).
+// Nothing but the box when either path has fewer than two points.
+void draw_overlay_points(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const std::vector<ImVec2>& learner,
+                         const std::vector<ImVec2>& reference, const OverlayBounds& bounds, ImU32 band);
+
+// The learner's own hand (teaching/sessions/learner_hand_traces.hpp): one pre-test trial, its guide and the
+// hand taken, in the task's coordinates.
+struct HandOverlay {
+  std::vector<ImVec2> learner, guide, hand;
+};
+
+// Two boxes at one scale: the learner over the guide at `first`, the learner over the hand at `second`.
+void draw_hand_overlay(ImDrawList& draw_list, ImVec2 first, ImVec2 second, ImVec2 box, const HandOverlay& overlay);
+
+}  // namespace sc::review_view

@@ -1,0 +1,85 @@
+// The learner-over-reference drawing (engine/review_view/overlay_points.hpp) as ImGui vertices: everything stays
+// inside its box, and a path that turns back on itself draws no miter spike beyond the line's own width (the
+// report's hand picture showed long spikes where a pen reversed).
+#include "engine/review_view/overlay_points.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace sc::review_view {
+namespace {
+
+class OverlayPoints : public ::testing::Test {
+ protected:
+  // One real frame (default font atlas built, so the lines are drawn as the app draws them: anti-aliased,
+  // mitred joins), drawing into the background list.
+  void SetUp() override {
+    context_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(400, 400);
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    ImGui::NewFrame();
+    list_ = ImGui::GetBackgroundDrawList();
+  }
+  void TearDown() override {
+    ImGui::EndFrame();
+    ImGui::DestroyContext(context_);
+  }
+  // The bounds of the vertices drawn in colour `col` (the lines' cores; their anti-aliased fringes fade to
+  // transparent, the box is another colour).
+  ImVec4 drawn_bounds(ImU32 col) const {
+    ImVec4 b(1e30f, 1e30f, -1e30f, -1e30f);
+    for (const ImDrawVert& v : list_->VtxBuffer)
+      if (v.col == col)
+        b = ImVec4(std::min(b.x, v.pos.x), std::min(b.y, v.pos.y), std::max(b.z, v.pos.x), std::max(b.w, v.pos.y));
+    return b;
+  }
+  ImGuiContext* context_ = nullptr;
+  ImDrawList* list_ = nullptr;
+};
+
+TEST_F(OverlayPoints, BoundsHoldEveryPointOfEverySet) {
+  OverlayBounds b;
+  b.include({{1, 5}, {3, -2}});
+  b.include({{-4, 0}});
+  EXPECT_EQ(b.lo.x, -4.0f);
+  EXPECT_EQ(b.lo.y, -2.0f);
+  EXPECT_EQ(b.hi.x, 3.0f);
+  EXPECT_EQ(b.hi.y, 5.0f);
+}
+
+TEST_F(OverlayPoints, APathThatTurnsBackDrawsNoSpikeOutsideItsWidth) {
+  // Right, then straight back left a little lower: a hairpin, as a pen retracing a stroke.
+  const std::vector<ImVec2> hairpin{{0, 0}, {100, 0}, {0, 4}};
+  const std::vector<ImVec2> learner{{0, 0}, {50, 2}};
+  OverlayBounds bounds;
+  bounds.include(hairpin);
+  const ImVec2 top_left(0, 0), size(220, 120);
+  draw_overlay_points(*list_, top_left, size, learner, hairpin, bounds, kOverlayGuide);
+  const ImVec4 drawn = drawn_bounds(kOverlayGuide);
+  // The mapped hairpin spans x in [10, 210]; a 7 px band's core may reach 3.5 px beyond its ends.
+  // ImGui's unlimited miter at the turn reached far past the box's right edge.
+  EXPECT_LE(drawn.z, 210.0f + 4.0f);
+  EXPECT_GE(drawn.x, 10.0f - 4.0f);
+}
+
+TEST_F(OverlayPoints, TheHandPictureDrawsBothBoxesAtOneScale) {
+  HandOverlay overlay{{{0, 0}, {10, 0}}, {{0, 0}, {10, 0}}, {{0, 0}, {20, 0}}};
+  draw_hand_overlay(*list_, {0, 0}, {0, 200}, {220, 100}, overlay);
+  // The learner's end (x = 10 of 0..20) lands at the middle of both boxes: one scale for all three paths.
+  float first_end = -1.0f, second_end = -1.0f;
+  for (const ImDrawVert& v : list_->VtxBuffer) {
+    if (v.col != kOverlayLearner) continue;
+    float& end = v.pos.y < 100 ? first_end : second_end;
+    end = std::max(end, v.pos.x);
+  }
+  EXPECT_NEAR(first_end, second_end, 0.5f);
+  EXPECT_LT(first_end, 140.0f);  // the learner's 10 of 20 does not fill the 220 px box
+}
+
+}  // namespace
+}  // namespace sc::review_view
