@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "engine/writing/writing_score.hpp"
 
@@ -29,6 +30,36 @@ double mean_credit(const std::vector<TracePoint3>& from, const std::vector<Trace
   return sum / static_cast<double>(from.size());
 }
 
+// How the learner's aligned points are laid over the expert's: both centroids, and the ratio of the expert's
+// to the learner's root-mean-square distance from them, clamped to [1 / kMaxSizeRatio, kMaxSizeRatio].
+struct SizeAndPlace {
+  double expert_x = 0, expert_y = 0, learner_x = 0, learner_y = 0, scale = 1;
+};
+
+SizeAndPlace fit_size_and_place(const std::vector<std::pair<TracePoint3, TracePoint3>>& pairs) {
+  SizeAndPlace fit;
+  if (pairs.empty()) return fit;
+  for (const auto& [a, b] : pairs) {
+    fit.expert_x += a[0];
+    fit.expert_y += a[1];
+    fit.learner_x += b[0];
+    fit.learner_y += b[1];
+  }
+  const double n = static_cast<double>(pairs.size());
+  fit.expert_x /= n;
+  fit.expert_y /= n;
+  fit.learner_x /= n;
+  fit.learner_y /= n;
+  double expert_spread = 0, learner_spread = 0;
+  for (const auto& [a, b] : pairs) {
+    expert_spread += (a[0] - fit.expert_x) * (a[0] - fit.expert_x) + (a[1] - fit.expert_y) * (a[1] - fit.expert_y);
+    learner_spread += (b[0] - fit.learner_x) * (b[0] - fit.learner_x) + (b[1] - fit.learner_y) * (b[1] - fit.learner_y);
+  }
+  if (learner_spread > 1e-9)
+    fit.scale = std::clamp(std::sqrt(expert_spread / learner_spread), 1.0 / kMaxSizeRatio, kMaxSizeRatio);
+  return fit;
+}
+
 }  // namespace
 
 std::vector<TracePoint3> writing_trace_points(const StepSequence& steps) {
@@ -46,23 +77,20 @@ double writing_execution_reward(const StepSequence& expert, const StepSequence& 
   std::vector<TracePoint3> expert_part, learner_part;
   for (int t = std::max(begin, 0); t < end && t < static_cast<int>(e.size()); ++t)
     expert_part.push_back(e[static_cast<std::size_t>(t)]);
-  // The learner's part is moved by the mean offset of its aligned pairs: the segment's shape is compared,
-  // not where earlier letters left the pen.
-  double dx = 0.0, dy = 0.0;
-  int pairs = 0, last = -1;
+  std::vector<std::pair<TracePoint3, TracePoint3>> pairs;  // (expert, learner) aligned within the segment
+  int last = -1;
   for (const auto& [i, j] : path) {
     if (i < begin || i >= end || i >= static_cast<int>(e.size()) || j >= static_cast<int>(l.size())) continue;
-    dx += l[static_cast<std::size_t>(j)][0] - e[static_cast<std::size_t>(i)][0];
-    dy += l[static_cast<std::size_t>(j)][1] - e[static_cast<std::size_t>(i)][1];
-    ++pairs;
+    pairs.emplace_back(e[static_cast<std::size_t>(i)], l[static_cast<std::size_t>(j)]);
     if (j == last) continue;
     learner_part.push_back(l[static_cast<std::size_t>(j)]);
     last = j;
   }
   if (expert_part.empty()) return 0.0;
+  const SizeAndPlace fit = fit_size_and_place(pairs);
   for (TracePoint3& p : learner_part) {
-    p[0] -= dx / std::max(pairs, 1);
-    p[1] -= dy / std::max(pairs, 1);
+    p[0] = fit.expert_x + fit.scale * (p[0] - fit.learner_x);
+    p[1] = fit.expert_y + fit.scale * (p[1] - fit.learner_y);
   }
   return mean_credit(expert_part, learner_part) * mean_credit(learner_part, expert_part) - 1.0;
 }
