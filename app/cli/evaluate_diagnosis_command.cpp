@@ -57,7 +57,8 @@ void print_noise_floor(const ParkingKit& kit, const std::vector<int>& pretest, c
   }
 }
 
-// Every learner's first targets (deficit skills starred) for one deficit and mode, to see what goes wrong.
+// Every learner's first targets (deficit skills starred) with their expertise per trial (0.000: no penalty, placed
+// by the ranking's tie-break), for each deficit and mode, to see what goes wrong.
 void print_details(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
   for (PlantedDeficit d : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
                            PlantedDeficit::LateBraking})
@@ -70,7 +71,7 @@ void print_details(const ParkingKit& kit, const std::vector<int>& pretest, const
                     device_name(static_cast<DriveDevice>(i % 3)).c_str(), o.weakest_per_trial);
         for (std::size_t k = 0; k < o.targets.size() && k < 5; ++k) {
           const bool hit = std::find(spoiled.begin(), spoiled.end(), o.targets[k]) != spoiled.end();
-          std::printf(" %d%s", o.targets[k], hit ? "*" : "");
+          std::printf(" %d%s (%.3f)", o.targets[k], hit ? "*" : "", o.target_per_trial[k]);
         }
         std::printf("\n");
       }

@@ -47,6 +47,7 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
   LearnerOutcome out;
   out.targets = d.expertise.targets;
   const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
+  for (int m : out.targets) out.target_per_trial.push_back(d.expertise.expertise[static_cast<std::size_t>(m)] / n);
   for (int m : d.expertise.ranking)
     out.weakest_per_trial = std::min(out.weakest_per_trial, d.expertise.expertise[static_cast<std::size_t>(m)] / n);
   out.quiet = out.weakest_per_trial >= quiet_expertise_threshold(mode);

@@ -37,6 +37,7 @@ std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<Parkin
 
 struct LearnerOutcome {
   std::vector<int> targets;
+  std::vector<double> target_per_trial;  // each target's E_m / trials (0: no penalty, the ranking's tie-break)
   double weakest_per_trial = 0.0;  // min over ranked skills of E_m / trials (0 when none ranked)
   int deficit_skills_seen = 0;     // deficit skills among the ranked (pre-test) skills
   bool recovered = false;          // see the spec (false for PlantedDeficit::None)

@@ -67,6 +67,10 @@ TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersAreFirstDrilledOnReversi
       const LearnerOutcome o =
           diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::NeverReversing, mode, kSeed, i);
       ASSERT_FALSE(o.targets.empty());
+      // Each target's expertise, weakest first: the first is the learner's weakest skill.
+      ASSERT_EQ(o.target_per_trial.size(), o.targets.size());
+      EXPECT_TRUE(std::is_sorted(o.target_per_trial.begin(), o.target_per_trial.end()));
+      EXPECT_DOUBLE_EQ(o.target_per_trial.front(), o.weakest_per_trial);
       first_reverses += std::find(reversing.begin(), reversing.end(), o.targets.front()) != reversing.end();
       planted += o.weakest_per_trial;
       noise_only += diagnose_planted_learner(*setup().kit, setup().pretest, PlantedDeficit::None, mode, kSeed, i)
