@@ -4,11 +4,9 @@
 #include <cmath>
 
 namespace sc::review_view {
-namespace {
 
-constexpr float kPad = 10.0f;
-
-std::vector<ImVec2> mapped(const std::vector<ImVec2>& points, ImVec2 o, ImVec2 size, const OverlayBounds& b) {
+std::vector<ImVec2> fit_into_box(const std::vector<ImVec2>& points, ImVec2 o, ImVec2 size, const OverlayBounds& b) {
+  constexpr float kPad = 10.0f;
   const float scale = std::min((size.x - 2 * kPad) / std::max(1e-3f, b.hi.x - b.lo.x),
                                (size.y - 2 * kPad) / std::max(1e-3f, b.hi.y - b.lo.y));
   std::vector<ImVec2> out;
@@ -17,6 +15,8 @@ std::vector<ImVec2> mapped(const std::vector<ImVec2>& points, ImVec2 o, ImVec2 s
                      o.y + size.y * 0.5f + (p.y - (b.lo.y + b.hi.y) * 0.5f) * scale);
   return out;
 }
+
+namespace {
 
 // Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel,
 // which shrinks to a fraction of a pixel in a thumbnail; a thick polyline through such zigzags draws a
@@ -35,9 +35,10 @@ std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
   return out;
 }
 
-// A thick polyline, split where it turns back sharply: ImGui joins segments with unlimited miters, which at a
-// pen reversing its direction draw a long spike; the pieces' ends overlap instead.
-void thick_path(ImDrawList& d, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
+}  // namespace
+
+// The pieces' ends overlap where the path is split.
+void draw_thick_path(ImDrawList& d, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
   constexpr float kSharpTurnCosine = -0.3f;  // a turn of more than ~107 degrees
   std::size_t begin = 0;
   for (std::size_t i = 1; i + 1 <= points.size(); ++i) {
@@ -54,8 +55,6 @@ void thick_path(ImDrawList& d, const std::vector<ImVec2>& points, ImU32 color, f
   }
 }
 
-}  // namespace
-
 void OverlayBounds::include(const std::vector<ImVec2>& points) {
   for (const ImVec2& p : points) {
     lo = ImVec2(std::min(lo.x, p.x), std::min(lo.y, p.y));
@@ -67,10 +66,10 @@ void draw_overlay_points(ImDrawList& d, ImVec2 o, ImVec2 size, const std::vector
                          const std::vector<ImVec2>& reference, const OverlayBounds& bounds, ImU32 band) {
   d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
   if (learner.size() < 2 || reference.size() < 2) return;
-  const std::vector<ImVec2> e = thinned(mapped(reference, o, size, bounds), 5.0f),
-                            l = thinned(mapped(learner, o, size, bounds), 1.5f);
-  thick_path(d, e, band, 7.0f);
-  thick_path(d, l, kOverlayLearner, 2.5f);
+  const std::vector<ImVec2> e = thinned(fit_into_box(reference, o, size, bounds), 5.0f),
+                            l = thinned(fit_into_box(learner, o, size, bounds), 1.5f);
+  draw_thick_path(d, e, band, 7.0f);
+  draw_thick_path(d, l, kOverlayLearner, 2.5f);
   d.AddCircleFilled(l.back(), 4.0f, kOverlayLearner);
 }
 

@@ -18,6 +18,14 @@ struct OverlayBounds {
   void include(const std::vector<ImVec2>& points);
 };
 
+// `points` mapped into the box at `top_left` of `size` (uniform scale, centred, a 10 px margin) by `bounds`.
+std::vector<ImVec2> fit_into_box(const std::vector<ImVec2>& points, ImVec2 top_left, ImVec2 size,
+                                 const OverlayBounds& bounds);
+
+// A thick polyline (box coordinates), split where it turns back sharply: ImGui joins segments with unlimited
+// miters, which at a pen reversing its direction draw a long spike.
+void draw_thick_path(ImDrawList& draw_list, const std::vector<ImVec2>& points, ImU32 color, float thickness);
+
 // A dark box, `reference` over it as a wide band of colour `band`, `learner` over that (mapped by `bounds`).
 // Nothing but the box when either path has fewer than two points.
 void draw_overlay_points(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const std::vector<ImVec2>& learner,

@@ -135,16 +135,18 @@ CurriculumInputs TrainingSession::curriculum_inputs() const {
     inputs.expert_time_slices.push_back(demo.time_slices);
   }
   inputs.seed = settings_.seed;
-  if (!pretest_trials_.empty() || !rounds_.empty()) {
-    std::vector<TestTrial> trials;
-    for (std::size_t i = 0; i < pretest_trials_.size(); ++i) {
-      const int pool = pretest_pool_.at(i);
-      const ExpertDemo& expert = kit_.expert_pool()[static_cast<std::size_t>(pool)];
-      trials.push_back({pool, expert.skills, pretest_trials_[i], expert.steps});
-    }
-    inputs.pretest = diagnose_trials(kit_, trials);
-  }
+  if (!pretest_trials_.empty() || !rounds_.empty()) inputs.pretest = diagnose_trials(kit_, pretest_test_trials());
   return inputs;
+}
+
+std::vector<TestTrial> TrainingSession::pretest_test_trials() const {
+  std::vector<TestTrial> trials;
+  for (std::size_t i = 0; i < pretest_trials_.size(); ++i) {
+    const int pool = pretest_pool_.at(i);
+    const ExpertDemo& expert = kit_.expert_pool()[static_cast<std::size_t>(pool)];
+    trials.push_back({pool, expert.skills, pretest_trials_[i], expert.steps});
+  }
+  return trials;
 }
 
 CurriculumConfig TrainingSession::curriculum_config() const {

@@ -109,6 +109,8 @@ class TrainingSession {
 
   // Trials submitted per round and kind (what resume reloads), for tests and the summary picture.
   const std::vector<Json>& pretest_trials() const { return pretest_trials_; }
+  // The pre-test trials with the expert's segmentation and steps of their scenarios (what the diagnosis reads).
+  std::vector<TestTrial> pretest_test_trials() const;
   const std::vector<Json>& eval_trials(int round) const;
 
  private:

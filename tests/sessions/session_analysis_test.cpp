@@ -51,5 +51,32 @@ TEST(SessionAnalysis, ALearnerWhoRepeatsTheExpertLosesNoExpertiseInEitherMode) {
   }
 }
 
+// The diagnosis page's pictures: the same estimate as the session's, and for each target the trial of its
+// largest penalty with the learner's steps aligned with the expert's segment, inside that trial.
+TEST(SessionAnalysis, TheDiagnosisWithPlacesIsTheSessionsDiagnosisAndSaysWhereEachTargetWentWrong) {
+  for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
+    const test::ToyTaskKit kit(8, mode);
+    const std::vector<TestTrial> trials = pretest(kit, 2, 3);
+    const ExecutionExpertise placed = diagnosis_with_places(kit, trials);
+    const ExpertiseEstimate plain = diagnose_trials(kit, trials);
+    EXPECT_EQ(placed.estimate.expertise, plain.expertise) << expertise_mode_name(mode);
+    EXPECT_EQ(placed.estimate.targets, plain.targets) << expertise_mode_name(mode);
+    ASSERT_EQ(placed.why.size(), plain.targets.size());
+    // Skill 2 is missing wherever the expert used it (quality-aware: or done badly, if that penalty is larger): its
+    // place is a trial whose expert sequence holds it.
+    ASSERT_EQ(placed.why.front().skill, 2) << expertise_mode_name(mode);
+    const TargetWhy& why = placed.why.front();
+    if (mode == ExpertiseMode::Alg2) {
+      EXPECT_EQ(why.reason, TargetReason::Missing);
+    }
+    EXPECT_NE(why.reason, TargetReason::NoMistake);
+    const TestTrial& trial = trials.at(static_cast<std::size_t>(why.trial));
+    EXPECT_EQ(trial.expert.segments.at(static_cast<std::size_t>(why.position - 1)).skill, 2);
+    EXPECT_LE(0, why.learner_begin);
+    EXPECT_LT(why.learner_begin, why.learner_end);
+    EXPECT_LE(why.learner_end, kit.steps_of(trial.trial).length());
+  }
+}
+
 }  // namespace
 }  // namespace sc

@@ -1,7 +1,8 @@
 // Analysis and diagnosis: a progress note while the pre-test (or the last round's practice) is segmented and
 // Alg. 2 runs (a fraction of a second), then one bar per skill the expert used — longer = more mistakes —
-// each with a small picture of the skill's expert segment, the kit's plain words and why it lost expertise
-// (its largest penalty: the trial it was missing in); the skills the drills will target are highlighted.
+// each with a small picture of the skill's expert segment, a picture of where it went wrong (the learner's pre-test
+// trial, the part aligned with that segment in orange), the kit's plain words and why it lost expertise (its
+// largest penalty: the trial it was missing in or done badly in); the skills the drills will target are highlighted.
 #include <imgui.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "app/gui/screens/learn_ui.hpp"
 #include "engine/core/error.hpp"
 #include "teaching/curricula/teachable_skills.hpp"
+#include "teaching/sessions/session_analysis.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 
 namespace sc {
@@ -106,7 +108,13 @@ class LearnDiagnosisScreen final : public Screen {
     const ImVec2 pic(110 * sc, 56 * sc);
     // The list scrolls when the window is too short for every row, so the button below always shows.
     const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
-    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height);
+    const bool places = has_places(s) && std::any_of(e.ranking.begin(), e.ranking.begin() + shown,
+                                                     [this](int m) { return place_of(m) != nullptr; });
+    const float room =
+        std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - (places ? 24 * sc : 0.0f));
+    if (places)
+      learn_ui::muted_wrapped(
+          "Left: the skill as the expert does it. Right: the pre-test trial it went wrong in, that part in orange.");
     ImGui::BeginChild("skill_rows", ImVec2(0, std::min(rows_height, room)), false,
                       rows_height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
     ImDrawList& d = *ImGui::GetWindowDrawList();
@@ -120,15 +128,25 @@ class LearnDiagnosisScreen final : public Screen {
         draw_skill_picture(d, at, pic, kit.expert_pool()[static_cast<std::size_t>(example->expert)], example->segment,
                            drilled);
       ImGui::Dummy(pic);
+      if (places) {
+        ImGui::SameLine(0, 6 * sc);
+        draw_place(d, ImGui::GetCursorScreenPos(), pic, s, m);
+        ImGui::Dummy(pic);
+      }
       ImGui::SameLine(0, 14 * sc);
       ImGui::BeginGroup();
       const std::string words = kit.describe_skill(m);
       if (drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
       const bool brief = !drilled && !is_teachable(m, pool, min_steps);
-      ImGui::Text("%s%s", words.c_str(), drilled ? "   - drills now" : brief ? "   - too brief to drill alone" : "");
+      ImGui::TextWrapped("%s%s", words.c_str(),
+                         drilled ? "   - drills now"
+                         : brief ? "   - too brief to drill alone"
+                                 : "");
       const std::string why = why_words(e, m);
       if (!why.empty()) {
-        ImGui::SameLine(0, 10 * sc);
+        // Beside the skill's words when it fits, else on a line of its own (long parking names).
+        const float beside = ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x - 10 * sc;
+        if (ImGui::CalcTextSize(why.c_str()).x <= beside) ImGui::SameLine(0, 10 * sc);
         ImGui::TextDisabled("%s", why.c_str());
       }
       if (drilled) ImGui::PopStyleColor();
@@ -180,8 +198,51 @@ class LearnDiagnosisScreen final : public Screen {
     return ImGui::GetCursorPosY() - top;
   }
 
+  // Where each target went wrong in the pre-test (TargetWhy), computed once per round; only for the round whose
+  // diagnosis is the pre-test's (later rounds' evidence is practice) and only when it is the diagnosis shown.
+  bool has_places(const TrainingSession& s) {
+    if (places_round_ != s.round()) {
+      places_round_ = s.round();
+      places_.reset();
+      place_steps_.clear();
+      if (s.round() == 1 && !s.pretest_trials().empty()) {
+        try {
+          places_ = diagnosis_with_places(s.kit(), s.pretest_test_trials());
+          for (const Json& t : s.pretest_trials()) place_steps_.push_back(s.kit().steps_of(t).length());
+        } catch (const InputError&) {
+          places_.reset();
+        }
+        if (places_ && places_->estimate.expertise != s.diagnosis().expertise) places_.reset();
+      }
+    }
+    return places_.has_value();
+  }
+
+  // The learner's trial of the skill's largest penalty, the part aligned with the expert's segment in orange; an
+  // empty box when the skill has no penalty.
+  const TargetWhy* place_of(int skill) const {
+    if (!places_) return nullptr;
+    const auto it = std::find_if(places_->why.begin(), places_->why.end(), [skill](const TargetWhy& w) {
+      return w.skill == skill && w.reason != TargetReason::NoMistake;
+    });
+    return it == places_->why.end() ? nullptr : &*it;
+  }
+
+  void draw_place(ImDrawList& d, ImVec2 at, ImVec2 size, const TrainingSession& s, int skill) const {
+    const TargetWhy* it = place_of(skill);
+    if (!it) return;
+    const auto trial = static_cast<std::size_t>(it->trial);
+    const ExpertDemo& expert = s.kit().expert_pool().at(static_cast<std::size_t>(s.pretest_pool_indices().at(trial)));
+    const std::string label = "trial " + std::to_string(it->trial + 1);
+    draw_trial_part_picture(d, at, size, s.pretest_trials().at(trial), expert.trial, it->learner_begin, it->learner_end,
+                            place_steps_.at(trial), label.c_str());
+  }
+
   AppServices& services_;
   LearnFlow& flow_;
+  int places_round_ = -1;
+  std::optional<ExecutionExpertise> places_;
+  std::vector<int> place_steps_;  // each pre-test trial's control steps
   int hand_round_ = -1;
   std::optional<LearnerHandTraces> hand_;
   int frames_ = 0;

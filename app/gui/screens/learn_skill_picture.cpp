@@ -1,6 +1,8 @@
 #include "app/gui/screens/learn_skill_picture.hpp"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "engine/core/task_kind.hpp"
@@ -33,21 +35,28 @@ std::vector<ImVec2> trial_points(const Json& trial) {
   return points;
 }
 
+// The points of steps [begin, end) of a trial with `steps` control steps whose path has `points` points.
+std::pair<std::size_t, std::size_t> point_range(TaskKind task, int begin, int end, int steps, std::size_t points) {
+  std::size_t first = 0, last = 0;
+  if (task == TaskKind::parking) {
+    const std::size_t per_step = static_cast<std::size_t>(parking::kSubstepsPerAction);
+    first = static_cast<std::size_t>(std::max(begin, 0)) * per_step;
+    last = static_cast<std::size_t>(std::max(end, 0)) * per_step;
+  } else {
+    // Writing steps are resampled pen steps; the segment's share of the pen path is close enough to show.
+    const double T = std::max(1, steps);
+    first = static_cast<std::size_t>(std::max(begin, 0) / T * static_cast<double>(points));
+    last = static_cast<std::size_t>(std::max(end, 0) / T * static_cast<double>(points));
+  }
+  last = std::min(last, points == 0 ? 0 : points - 1);
+  return {std::min(first, last), last};
+}
+
 Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
   Polyline out;
   out.points = trial_points(demo.trial);
-  if (task_of(demo.trial) == TaskKind::parking) {
-    const std::size_t per_step = static_cast<std::size_t>(parking::kSubstepsPerAction);
-    out.first = static_cast<std::size_t>(segment.begin) * per_step;
-    out.last = static_cast<std::size_t>(segment.end) * per_step;
-  } else {
-    // Writing steps are resampled pen steps; the segment's share of the pen path is close enough to show.
-    const double T = std::max(1, demo.steps.length());
-    out.first = static_cast<std::size_t>(segment.begin / T * static_cast<double>(out.points.size()));
-    out.last = static_cast<std::size_t>(segment.end / T * static_cast<double>(out.points.size()));
-  }
-  out.last = std::min(out.last, out.points.empty() ? 0 : out.points.size() - 1);
-  out.first = std::min(out.first, out.last);
+  std::tie(out.first, out.last) =
+      point_range(task_of(demo.trial), segment.begin, segment.end, demo.steps.length(), out.points.size());
   return out;
 }
 
@@ -75,6 +84,28 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
   const ImU32 color = highlight ? IM_COL32(255, 160, 90, 255) : IM_COL32(91, 155, 255, 255);
   if (n >= 2) d.AddPolyline(mapped.data() + line.first, n, color, ImDrawFlags_None, 3.5f);
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
+}
+
+void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial,
+                             int begin, int end, int steps, const char* label) {
+  const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
+  review_view::OverlayBounds bounds;
+  bounds.include(learner);
+  bounds.include(expert);
+  review_view::draw_overlay_points(d, o, size, learner, expert, bounds, review_view::kOverlayGuide);
+  const auto [first, last] = point_range(task_of(learner_trial), begin, end, steps, learner.size());
+  if (last > first) {
+    const std::vector<ImVec2> part =
+        review_view::fit_into_box(std::vector<ImVec2>(learner.begin() + static_cast<std::ptrdiff_t>(first),
+                                                      learner.begin() + static_cast<std::ptrdiff_t>(last) + 1),
+                                  o, size, bounds);
+    review_view::draw_thick_path(d, part, IM_COL32(255, 140, 66, 255), 4.0f);
+  }
+  // The label on a dark patch in the top left corner, at 80 % of the text size.
+  const float font = ImGui::GetFontSize() * 0.8f;
+  const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label);
+  d.AddRectFilled(o, ImVec2(o.x + text.x + 8.0f, o.y + text.y + 4.0f), IM_COL32(28, 33, 43, 220), 6.0f);
+  d.AddText(ImGui::GetFont(), font, ImVec2(o.x + 4.0f, o.y + 2.0f), IM_COL32(200, 208, 220, 255), label);
 }
 
 void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {

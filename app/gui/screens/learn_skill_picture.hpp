@@ -13,6 +13,11 @@ namespace sc {
 void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertDemo& demo,
                         const SkillSegment& segment, bool highlight);
 
+// Where a diagnosis target went wrong: the learner's trial in yellow over the expert's path of the same scenario
+// (a faint band), the learner's control steps [begin, end) of its `steps` in orange, `label` in the corner.
+void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
+                             const Json& expert_trial, int begin, int end, int steps, const char* label);
+
 // Before/after pictures: the expert's path of the same scenario as a wide faint band, the learner's path
 // over it in yellow, both fitted into the box together.
 void draw_overlay_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
