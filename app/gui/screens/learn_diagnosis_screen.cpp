@@ -183,8 +183,10 @@ class LearnDiagnosisScreen final : public Screen {
   float draw_learner_hand(UiContext& ui, const TrainingSession& s) {
     const std::string& name = s.diagnosis().learner_hand;
     if (name.empty()) return 0.0f;
-    if (hand_round_ != s.round()) {
+    if (hand_round_ != s.round() || hand_session_ != &s || hand_for_ != s.diagnosis().expertise) {
       hand_round_ = s.round();
+      hand_session_ = &s;
+      hand_for_ = s.diagnosis().expertise;
       hand_ = learner_hand_picture(s);
     }
     learn_ui::muted_wrapped(("Your letters follow a hand of your own, closest to " + name +
@@ -201,8 +203,11 @@ class LearnDiagnosisScreen final : public Screen {
   // Where each target went wrong in the pre-test (TargetWhy), computed once per round; only for the round whose
   // diagnosis is the pre-test's (later rounds' evidence is practice) and only when it is the diagnosis shown.
   bool has_places(const TrainingSession& s) {
-    if (places_round_ != s.round()) {
+    // Computed again for another round, session or diagnosis (a new session may reuse the old one's address).
+    if (places_round_ != s.round() || places_session_ != &s || places_for_ != s.diagnosis().expertise) {
       places_round_ = s.round();
+      places_session_ = &s;
+      places_for_ = s.diagnosis().expertise;
       places_.reset();
       place_steps_.clear();
       if (s.round() == 1 && !s.pretest_trials().empty()) {
@@ -230,8 +235,8 @@ class LearnDiagnosisScreen final : public Screen {
 
   void draw_place(ImDrawList& d, ImVec2 at, ImVec2 size, const TrainingSession& s, int skill) const {
     const TargetWhy* it = place_of(skill);
-    if (!it) return;
-    const auto trial = static_cast<std::size_t>(it->trial);
+    const auto trial = it ? static_cast<std::size_t>(it->trial) : 0;
+    if (!it || trial >= place_steps_.size() || trial >= s.pretest_trials().size()) return;
     const ExpertDemo& expert = s.kit().expert_pool().at(static_cast<std::size_t>(s.pretest_pool_indices().at(trial)));
     const std::string label = "trial " + std::to_string(it->trial + 1);
     draw_trial_part_picture(d, at, size, s.pretest_trials().at(trial), expert.trial, it->learner_begin, it->learner_end,
@@ -241,9 +246,13 @@ class LearnDiagnosisScreen final : public Screen {
   AppServices& services_;
   LearnFlow& flow_;
   int places_round_ = -1;
+  const TrainingSession* places_session_ = nullptr;
+  std::vector<double> places_for_;  // the diagnosis shown when places_ was computed
   std::optional<ExecutionExpertise> places_;
   std::vector<int> place_steps_;  // each pre-test trial's control steps
   int hand_round_ = -1;
+  const TrainingSession* hand_session_ = nullptr;
+  std::vector<double> hand_for_;  // the diagnosis shown when hand_ was drawn from it
   std::optional<LearnerHandTraces> hand_;
   int frames_ = 0;
   bool confirm_ = false;
