@@ -73,13 +73,13 @@ ExecutionTrial execution_trial(const TaskKit& kit, const Json& scenario, Experti
 }
 
 ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTrial>& trials) {
-  if (kit.learners_expertise() != ExpertiseMode::Alg2) return diagnosis_with_places(kit, trials).estimate;
+  if (kit.learners_expertise() != ExpertiseMode::Alg2) return diagnosis_with_places(kit, trials).expertise.estimate;
   // Alg. 2 reads the segmentations alone: no alignment needed.
   return estimate_expertise(expertise_trials(kit, trials), kit.extractor().num_skills(),
                             kit.curriculum_config().drills.num_targets);
 }
 
-ExecutionExpertise diagnosis_with_places(const TaskKit& kit, const std::vector<TestTrial>& trials) {
+PlacedDiagnosis diagnosis_with_places(const TaskKit& kit, const std::vector<TestTrial>& trials) {
   const int skills = kit.extractor().num_skills(), targets = kit.curriculum_config().drills.num_targets;
   const std::vector<StepSequence> steps = learner_steps(kit, trials);
   std::vector<ExpertiseTrial> plain = expertise_trials(kit, trials, steps);
@@ -88,7 +88,9 @@ ExecutionExpertise diagnosis_with_places(const TaskKit& kit, const std::vector<T
   for (std::size_t i = 0; i < trials.size(); ++i)
     evidence.push_back(execution_trial(kit, scenario_of(trials[i].trial), std::move(plain[i]), trials[i].expert_steps,
                                        steps[i], mode));
-  return estimate_execution_expertise(evidence, skills, targets, mode, kit.execution_noise_floor());
+  PlacedDiagnosis out{estimate_execution_expertise(evidence, skills, targets, mode, kit.execution_noise_floor()), {}};
+  for (const StepSequence& t : steps) out.learner_steps.push_back(t.length());
+  return out;
 }
 
 std::optional<SkillExample> example_of_skill(const std::vector<ExpertDemo>& pool, int skill) {

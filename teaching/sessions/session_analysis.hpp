@@ -33,8 +33,13 @@ ExecutionTrial execution_trial(const TaskKit& kit, const Json& scenario, Experti
 // The kit's learners_expertise() with the kit's skill count and its drill config's N_target.
 ExpertiseEstimate diagnose_trials(const TaskKit& kit, const std::vector<TestTrial>& trials);
 // The same estimate, with why each target was chosen and where (TargetWhy: the trial, the expert's segment and the
-// learner's steps aligned with it), for the diagnosis page's pictures. Aligns every trial also under Alg. 2.
-ExecutionExpertise diagnosis_with_places(const TaskKit& kit, const std::vector<TestTrial>& trials);
+// learner's steps aligned with it), for the diagnosis page's pictures, and each trial's step count (to find those
+// steps on the trial's path). Aligns every trial also under Alg. 2.
+struct PlacedDiagnosis {
+  ExecutionExpertise expertise;
+  std::vector<int> learner_steps;  // per trial
+};
+PlacedDiagnosis diagnosis_with_places(const TaskKit& kit, const std::vector<TestTrial>& trials);
 
 // An expert segment showing `skill` (the longest one in the pool; ties: lower pool index), for pictures.
 struct SkillExample {

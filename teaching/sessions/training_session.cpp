@@ -135,8 +135,15 @@ CurriculumInputs TrainingSession::curriculum_inputs() const {
     inputs.expert_time_slices.push_back(demo.time_slices);
   }
   inputs.seed = settings_.seed;
-  if (!pretest_trials_.empty() || !rounds_.empty()) inputs.pretest = diagnose_trials(kit_, pretest_test_trials());
+  if (const PlacedDiagnosis* placed = pretest_places())
+    inputs.pretest = placed->expertise.estimate;
+  else if (!pretest_trials_.empty() || !rounds_.empty())
+    inputs.pretest = diagnose_trials(kit_, pretest_test_trials());
   return inputs;
+}
+
+const PlacedDiagnosis* TrainingSession::pretest_places() const {
+  return pretest_places_ && pretest_places_trials_ == pretest_trials_.size() ? &*pretest_places_ : nullptr;
 }
 
 std::vector<TestTrial> TrainingSession::pretest_test_trials() const {
@@ -160,6 +167,10 @@ void TrainingSession::compute_round(int r) {
   // An Adaptive round builds on every earlier one (resume may reach here before they were recomputed).
   if (r > 1 && !state(r - 1).analysed) compute_round(r - 1);
   RoundState& st = state(r);
+  if (!pretest_trials_.empty() && !pretest_places()) {
+    pretest_places_ = diagnosis_with_places(kit_, pretest_test_trials());
+    pretest_places_trials_ = pretest_trials_.size();
+  }
   const CurriculumInputs inputs = curriculum_inputs();
   const CurriculumConfig config = curriculum_config();
   if (settings_.condition != StudyCondition::Adaptive) {

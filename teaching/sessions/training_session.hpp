@@ -81,6 +81,9 @@ class TrainingSession {
   const ExpertiseEstimate& diagnosis() const;  // of the current round (after analyse)
   const Curriculum& curriculum() const;        // of the current round (after analyse)
   double last_analysis_seconds() const { return analysis_seconds_; }
+  // The pre-test's diagnosis with where each target went wrong (for the diagnosis page's pictures); null before
+  // the first analysis.
+  const PlacedDiagnosis* pretest_places() const;
   CurriculumConfig curriculum_config() const;  // the kit's, with the session's round size
 
   // ---- drills (phase Drills) ----
@@ -152,6 +155,10 @@ class TrainingSession {
   mutable std::map<int, std::vector<ExpertDemo>> eval_experts_;  // per round, built on first use
   mutable std::map<std::pair<int, int>, PlayableDrill> drills_;  // (round, item)
   double analysis_seconds_ = 0.0;
+  // The pre-test's diagnosis, computed once (with places) when a round is first computed after the pre-test; every
+  // round's curriculum inputs read it. Keyed by the number of pre-test trials it was computed from.
+  std::optional<PlacedDiagnosis> pretest_places_;
+  std::size_t pretest_places_trials_ = 0;
 };
 
 }  // namespace sc

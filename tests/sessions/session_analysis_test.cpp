@@ -57,7 +57,8 @@ TEST(SessionAnalysis, TheDiagnosisWithPlacesIsTheSessionsDiagnosisAndSaysWhereEa
   for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
     const test::ToyTaskKit kit(8, mode);
     const std::vector<TestTrial> trials = pretest(kit, 2, 3);
-    const ExecutionExpertise placed = diagnosis_with_places(kit, trials);
+    const PlacedDiagnosis diagnosis = diagnosis_with_places(kit, trials);
+    const ExecutionExpertise& placed = diagnosis.expertise;
     const ExpertiseEstimate plain = diagnose_trials(kit, trials);
     EXPECT_EQ(placed.estimate.expertise, plain.expertise) << expertise_mode_name(mode);
     EXPECT_EQ(placed.estimate.targets, plain.targets) << expertise_mode_name(mode);
@@ -75,6 +76,8 @@ TEST(SessionAnalysis, TheDiagnosisWithPlacesIsTheSessionsDiagnosisAndSaysWhereEa
     EXPECT_LE(0, why.learner_begin);
     EXPECT_LT(why.learner_begin, why.learner_end);
     EXPECT_LE(why.learner_end, kit.steps_of(trial.trial).length());
+    ASSERT_EQ(diagnosis.learner_steps.size(), trials.size());
+    EXPECT_EQ(diagnosis.learner_steps.at(static_cast<std::size_t>(why.trial)), kit.steps_of(trial.trial).length());
   }
 }
 

@@ -108,8 +108,12 @@ class LearnDiagnosisScreen final : public Screen {
     const ImVec2 pic(110 * sc, 56 * sc);
     // The list scrolls when the window is too short for every row, so the button below always shows.
     const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
-    const bool places = has_places(s) && std::any_of(e.ranking.begin(), e.ranking.begin() + shown,
-                                                     [this](int m) { return place_of(m) != nullptr; });
+    // Where each target went wrong, when the diagnosis shown is the pre-test's (later adaptive rounds' evidence is
+    // practice).
+    const PlacedDiagnosis* placed = s.pretest_places();
+    if (placed && placed->expertise.estimate.expertise != e.expertise) placed = nullptr;
+    const bool places = placed && std::any_of(e.ranking.begin(), e.ranking.begin() + shown,
+                                              [placed](int m) { return place_of(*placed, m) != nullptr; });
     const float room =
         std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - (places ? 24 * sc : 0.0f));
     if (places)
@@ -130,7 +134,7 @@ class LearnDiagnosisScreen final : public Screen {
       ImGui::Dummy(pic);
       if (places) {
         ImGui::SameLine(0, 6 * sc);
-        draw_place(d, ImGui::GetCursorScreenPos(), pic, s, m);
+        draw_place(d, ImGui::GetCursorScreenPos(), pic, s, *placed, m);
         ImGui::Dummy(pic);
       }
       ImGui::SameLine(0, 14 * sc);
@@ -200,56 +204,28 @@ class LearnDiagnosisScreen final : public Screen {
     return ImGui::GetCursorPosY() - top;
   }
 
-  // Where each target went wrong in the pre-test (TargetWhy), computed once per round; only for the round whose
-  // diagnosis is the pre-test's (later rounds' evidence is practice) and only when it is the diagnosis shown.
-  bool has_places(const TrainingSession& s) {
-    // Computed again for another round, session or diagnosis (a new session may reuse the old one's address).
-    if (places_round_ != s.round() || places_session_ != &s || places_for_ != s.diagnosis().expertise) {
-      places_round_ = s.round();
-      places_session_ = &s;
-      places_for_ = s.diagnosis().expertise;
-      places_.reset();
-      place_steps_.clear();
-      if (s.round() == 1 && !s.pretest_trials().empty()) {
-        try {
-          places_ = diagnosis_with_places(s.kit(), s.pretest_test_trials());
-          for (const Json& t : s.pretest_trials()) place_steps_.push_back(s.kit().steps_of(t).length());
-        } catch (const InputError&) {
-          places_.reset();
-        }
-        if (places_ && places_->estimate.expertise != s.diagnosis().expertise) places_.reset();
-      }
-    }
-    return places_.has_value();
-  }
-
-  // The learner's trial of the skill's largest penalty, the part aligned with the expert's segment in orange; an
-  // empty box when the skill has no penalty.
-  const TargetWhy* place_of(int skill) const {
-    if (!places_) return nullptr;
-    const auto it = std::find_if(places_->why.begin(), places_->why.end(), [skill](const TargetWhy& w) {
+  // The learner's trial of the skill's largest penalty, the part aligned with the expert's segment in orange.
+  static const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill) {
+    const auto& why = placed.expertise.why;
+    const auto it = std::find_if(why.begin(), why.end(), [skill](const TargetWhy& w) {
       return w.skill == skill && w.reason != TargetReason::NoMistake;
     });
-    return it == places_->why.end() ? nullptr : &*it;
+    return it == why.end() ? nullptr : &*it;
   }
 
-  void draw_place(ImDrawList& d, ImVec2 at, ImVec2 size, const TrainingSession& s, int skill) const {
-    const TargetWhy* it = place_of(skill);
-    const auto trial = it ? static_cast<std::size_t>(it->trial) : 0;
-    if (!it || trial >= place_steps_.size() || trial >= s.pretest_trials().size()) return;
+  static void draw_place(ImDrawList& d, ImVec2 at, ImVec2 size, const TrainingSession& s, const PlacedDiagnosis& placed,
+                         int skill) {
+    const TargetWhy* it = place_of(placed, skill);
+    if (!it) return;
+    const auto trial = static_cast<std::size_t>(it->trial);
     const ExpertDemo& expert = s.kit().expert_pool().at(static_cast<std::size_t>(s.pretest_pool_indices().at(trial)));
     const std::string label = "trial " + std::to_string(it->trial + 1);
     draw_trial_part_picture(d, at, size, s.pretest_trials().at(trial), expert.trial, it->learner_begin, it->learner_end,
-                            place_steps_.at(trial), label.c_str());
+                            placed.learner_steps.at(trial), label.c_str());
   }
 
   AppServices& services_;
   LearnFlow& flow_;
-  int places_round_ = -1;
-  const TrainingSession* places_session_ = nullptr;
-  std::vector<double> places_for_;  // the diagnosis shown when places_ was computed
-  std::optional<ExecutionExpertise> places_;
-  std::vector<int> place_steps_;  // each pre-test trial's control steps
   int hand_round_ = -1;
   const TrainingSession* hand_session_ = nullptr;
   std::vector<double> hand_for_;  // the diagnosis shown when hand_ was drawn from it
