@@ -304,21 +304,19 @@ void TrainingSession::skip_practice() {
 RoundSummary TrainingSession::summary() const {
   require_phase(SessionPhase::Summary, "the summary");
   std::vector<double> pre, eval;
-  std::vector<TestTrial> pre_trials, eval_trials_list;
-  for (std::size_t i = 0; i < pretest_trials_.size(); ++i) {
-    pre.push_back(kit_.reward_of(pretest_trials_[i]));
-    const int pool = pretest_pool_[i];
-    const ExpertDemo& expert = kit_.expert_pool()[static_cast<std::size_t>(pool)];
-    pre_trials.push_back({pool, expert.skills, pretest_trials_[i], expert.steps});
-  }
+  std::vector<TestTrial> eval_trials_list;
+  for (const Json& trial : pretest_trials_) pre.push_back(kit_.reward_of(trial));
   const RoundState& st = state(round());
   const auto& experts = eval_experts();
   for (std::size_t i = 0; i < st.eval.size(); ++i) {
     eval.push_back(kit_.reward_of(st.eval[i]));
     eval_trials_list.push_back({static_cast<int>(i), experts.at(i).skills, st.eval[i], experts.at(i).steps});
   }
-  return summarize_round(round(), pre, eval, diagnose_trials(kit_, pre_trials), diagnose_trials(kit_, eval_trials_list),
-                         practice_per_skill(), static_cast<int>(st.practice.size()));
+  // The pre-test's diagnosis as the analysis computed it (the same estimate), not a second time.
+  const PlacedDiagnosis* placed = pretest_places();
+  const ExpertiseEstimate before = placed ? placed->expertise.estimate : diagnose_trials(kit_, pretest_test_trials());
+  return summarize_round(round(), pre, eval, before, diagnose_trials(kit_, eval_trials_list), practice_per_skill(),
+                         static_cast<int>(st.practice.size()));
 }
 
 std::map<int, int> TrainingSession::practice_per_skill() const {
