@@ -20,6 +20,7 @@ struct ScreenshotOptions {
   int frames = 3;
   TaskKind task = TaskKind::parking;
   int learner_hand = 0;
+  std::string mouse;  // "X,Y", empty: outside the window
 };
 
 CommandRunner setup_screenshot(CLI::App& sub) {
@@ -35,6 +36,8 @@ CommandRunner setup_screenshot(CLI::App& sub) {
                  "Writing: the scripted learner writes its tests in this Omniglot drawer's letters (0: the guide's)")
       ->capture_default_str()
       ->check(CLI::Range(0, 15));
+  sub.add_option("--mouse", options->mouse,
+                 "Rest the mouse at X,Y (framebuffer pixels from the top left) to capture what hovering shows");
   return [options] {
     ScreenshotRequest request;
     request.screen = options->screen;
@@ -42,6 +45,7 @@ CommandRunner setup_screenshot(CLI::App& sub) {
     request.frames = options->frames;
     request.task = options->task;
     request.learner_hand = options->learner_hand;
+    if (!options->mouse.empty()) request.mouse = parse_point(options->mouse, "--mouse");
     write_png(options->out, render_screen_offscreen(request));
     std::printf("%s\n", options->out.c_str());
     return 0;

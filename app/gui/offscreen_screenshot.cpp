@@ -1,6 +1,9 @@
 #include "app/gui/offscreen_screenshot.hpp"
 
+#include <imgui.h>
+
 #include <algorithm>
+#include <cfloat>
 #include <charconv>
 
 #include "app/gui/screen_host.hpp"
@@ -18,13 +21,30 @@ RgbaImage render_screen_offscreen(const ScreenshotRequest& request) {
   services.screenshot_learner_hand = request.learner_hand;
   if (request.task == TaskKind::writing) services.device.kind = DeviceKind::mouse_pen;
   ScreenHost host(*context, services, request.screen);
-  const FrameInput input;  // no devices, mouse outside: nothing hovered
+  FrameInput input;  // no devices, nothing pressed
+  if (request.mouse) {
+    input.mouse_inside = true;
+    input.mouse_pixels = {request.mouse->first, request.mouse->second};
+  }
   for (int i = 0; i < std::max(2, request.frames); ++i) {
     host.imgui().make_current();
+    ImGui::GetIO().MousePos =
+        request.mouse ? ImVec2(request.mouse->first, request.mouse->second) : ImVec2(-FLT_MAX, -FLT_MAX);
     host.frame(input, ScreenHost::kSimulationStep);
     context->present();
   }
   return context->read_rgba();
+}
+
+std::pair<float, float> parse_point(const std::string& text, const std::string& option) {
+  const auto comma = text.find(',');
+  int x = 0, y = 0;
+  const bool ok =
+      comma != std::string::npos && std::from_chars(text.data(), text.data() + comma, x).ptr == text.data() + comma &&
+      std::from_chars(text.data() + comma + 1, text.data() + text.size(), y).ptr == text.data() + text.size();
+  if (!ok || x < 0 || y < 0 || x > 8192 || y > 8192)
+    throw InputError(option + " " + text, "expected X,Y in framebuffer pixels with each in 0..8192, e.g. 640,360");
+  return {static_cast<float>(x), static_cast<float>(y)};
 }
 
 std::pair<int, int> parse_size(const std::string& text, const std::string& option) {

@@ -82,10 +82,16 @@ TEST(AppScreens, MissingShadersAndFontsAreOneLineExitTwo) {
   EXPECT_NE(r.output.find("/nonexistent/assets/fonts/DejaVuSans.ttf"), std::string::npos) << r.output;
 }
 
-TEST(AppScreens, BadSizeAndBadBackendAreOneLineExitTwo) {
+TEST(AppScreens, BadSizeMouseAndBackendAreOneLineExitTwo) {
   CommandResult r = run_skillcoach("screenshot --size 12x-4 --out /tmp/x.png");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+  for (const char* mouse : {"640", "640,-1", "x,3", "640,360,1", "9000,10"}) {
+    r = run_skillcoach(std::string("screenshot --mouse ") + mouse + " --out /tmp/x.png");
+    EXPECT_EQ(r.exit_code, 2) << mouse;
+    EXPECT_EQ(line_count(r.output), 1) << r.output;
+    EXPECT_NE(r.output.find("--mouse"), std::string::npos) << r.output;
+  }
   r = run_skillcoach("screenshot --out /tmp/x.png", "SKILLCOACH_GL=vulkan");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(line_count(r.output), 1) << r.output;

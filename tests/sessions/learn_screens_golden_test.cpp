@@ -60,6 +60,35 @@ INSTANTIATE_TEST_SUITE_P(Writing, WritingLearnScreenGolden,
                            return std::string(info.param.screen) + "_hand" + std::to_string(info.param.hand);
                          });
 
+// Pointing at a small picture of the diagnosis page shows it four times as large with a caption: the place a
+// parking target went wrong (row 1's right picture), and a writing learner's `b` in drawer 13's hand.
+struct ZoomShot {
+  const char* name;
+  const char* options;  // screenshot options beyond --screen, --size and --out
+};
+
+void PrintTo(const ZoomShot& z, std::ostream* out) { *out << z.name; }
+
+class LearnDiagnosisZoomGolden : public ::testing::TestWithParam<ZoomShot> {};
+
+TEST_P(LearnDiagnosisZoomGolden, MatchesGolden) {
+  const ZoomShot param = GetParam();
+  const auto out = test_output_dir() / (std::string(param.name) + ".png");
+  const CommandResult shot = run_skillcoach(std::string("screenshot --screen learn_diagnosis --size 1280x720 ") +
+                                            param.options + " --out '" + out.string() + "'");
+  ASSERT_EQ(shot.exit_code, 0) << shot.output;
+  EXPECT_TRUE(matches_golden(read_png(out), std::string("learn/") + param.name));
+}
+
+// 10 frames: the page's auto-sized card settles, then the tooltip window takes a frame to size itself.
+INSTANTIATE_TEST_SUITE_P(Trainer, LearnDiagnosisZoomGolden,
+                         ::testing::Values(ZoomShot{"learn_diagnosis_zoom_place", "--mouse 393,205 --frames 10"},
+                                           ZoomShot{"learn_diagnosis_writing_hand13_zoom_place",
+                                                    "--task writing --learner-hand 13 --mouse 393,350 --frames 10"}),
+                         [](const ::testing::TestParamInfo<ZoomShot>& info) {
+                           return info.index == 0 ? std::string("parking") : std::string("writing_hand13");
+                         });
+
 INSTANTIATE_TEST_SUITE_P(Trainer, LearnScreenGolden,
                          ::testing::Values("learn_welcome", "learn_instructions", "learn_trial", "learn_diagnosis",
                                            "learn_summary"));

@@ -114,11 +114,13 @@ class LearnDiagnosisScreen final : public Screen {
     if (placed && placed->expertise.estimate.expertise != e.expertise) placed = nullptr;
     const bool places = placed && std::any_of(e.ranking.begin(), e.ranking.begin() + shown,
                                               [placed](int m) { return place_of(*placed, m) != nullptr; });
-    const float room =
-        std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - (places ? 24 * sc : 0.0f));
-    if (places)
-      learn_ui::muted_wrapped(
-          "Left: the skill as the expert does it. Right: the pre-test trial it went wrong in, that part in orange.");
+    const char* hint = places ? "Left: the skill as the expert does it. Right: the pre-test trial it went wrong in, "
+                                "that part in orange. Point at a picture to see it larger."
+                              : "Point at a picture to see it larger.";
+    const float hint_height =
+        ImGui::CalcTextSize(hint, nullptr, false, ImGui::GetContentRegionAvail().x).y + ImGui::GetStyle().ItemSpacing.y;
+    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - hint_height);
+    learn_ui::muted_wrapped(hint);
     ImGui::BeginChild("skill_rows", ImVec2(0, std::min(rows_height, room)), false,
                       rows_height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
     ImDrawList& d = *ImGui::GetWindowDrawList();
@@ -127,16 +129,7 @@ class LearnDiagnosisScreen final : public Screen {
       const bool drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
         return std::find(it.target_skills.begin(), it.target_skills.end(), m) != it.target_skills.end();
       });
-      const ImVec2 at = ImGui::GetCursorScreenPos();
-      if (const auto example = example_of_skill(kit.expert_pool(), m))
-        draw_skill_picture(d, at, pic, kit.expert_pool()[static_cast<std::size_t>(example->expert)], example->segment,
-                           drilled);
-      ImGui::Dummy(pic);
-      if (places) {
-        ImGui::SameLine(0, 6 * sc);
-        draw_place(d, ImGui::GetCursorScreenPos(), pic, s, *placed, m);
-        ImGui::Dummy(pic);
-      }
+      draw_row_pictures(d, pic, s, places ? placed : nullptr, m, drilled, sc);
       ImGui::SameLine(0, 14 * sc);
       ImGui::BeginGroup();
       const std::string words = kit.describe_skill(m);
@@ -202,6 +195,38 @@ class LearnDiagnosisScreen final : public Screen {
     const float top = ImGui::GetCursorPosY();
     hand_picture_row(*hand_, "Your", name, 80 * ui.ui_scale, 16 * ui.ui_scale);
     return ImGui::GetCursorPosY() - top;
+  }
+
+  // A row's pictures: the skill as the expert does it and, with `placed`, where the learner's pre-test went wrong.
+  // Each is small beside its bar, so pointing at it shows it four times as large with what it shows in words.
+  static void draw_row_pictures(ImDrawList& d, ImVec2 pic, const TrainingSession& s, const PlacedDiagnosis* placed,
+                                int skill, bool drilled, float sc) {
+    const TaskKit& kit = s.kit();
+    const auto example = example_of_skill(kit.expert_pool(), skill);
+    const auto draw_example = [&](ImDrawList& list, ImVec2 at, ImVec2 size) {
+      if (example)
+        draw_skill_picture(list, at, size, kit.expert_pool()[static_cast<std::size_t>(example->expert)],
+                           example->segment, drilled);
+    };
+    draw_example(d, ImGui::GetCursorScreenPos(), pic);
+    ImGui::Dummy(pic);
+    if (example)
+      enlarge_on_hover("How the expert does \"" + kit.describe_skill(skill) +
+                           "\": the coloured part, ending at the dot; in grey, the rest of the expert's trial",
+                       pic, draw_example);
+    if (!placed) return;
+    ImGui::SameLine(0, 6 * sc);
+    const auto draw_where = [&](ImDrawList& list, ImVec2 at, ImVec2 size) {
+      draw_place(list, at, size, s, *placed, skill);
+    };
+    draw_where(d, ImGui::GetCursorScreenPos(), pic);
+    ImGui::Dummy(pic);
+    if (const TargetWhy* why = place_of(*placed, skill))
+      enlarge_on_hover("Your pre-test trial " + std::to_string(why->trial + 1) +
+                           " in yellow, over the expert's in blue. Orange: the part of yours that lines up with where "
+                           "the expert does \"" +
+                           kit.describe_skill(skill) + "\"",
+                       pic, draw_where);
   }
 
   // The learner's trial of the skill's largest penalty, the part aligned with the expert's segment in orange.

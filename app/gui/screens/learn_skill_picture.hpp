@@ -4,6 +4,7 @@
 // rest of the manoeuvre faint; writing — the pen path of the segment's share of the gold trajectory.
 #include <imgui.h>
 
+#include <string>
 #include <vector>
 
 #include "teaching/sessions/session_analysis.hpp"
@@ -22,5 +23,22 @@ void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size
 // over it in yellow, both fitted into the box together.
 void draw_overlay_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
                           const Json& expert_trial);
+
+// While the last item (a picture of `size`) is hovered: a tooltip with `caption` and the picture `zoom` times as
+// large, drawn by draw(draw_list, top_left, size). The pictures beside a list are small; pointing at one is how
+// to read it.
+template <class Draw>
+void enlarge_on_hover(const std::string& caption, ImVec2 size, const Draw& draw, float zoom = 4.0f) {
+  if (!ImGui::IsItemHovered()) return;
+  const ImVec2 large(zoom * size.x, zoom * size.y);
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + large.x);
+  ImGui::TextUnformatted(caption.c_str());
+  ImGui::PopTextWrapPos();
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(large);
+  draw(*ImGui::GetWindowDrawList(), at, large);
+  ImGui::EndTooltip();
+}
 
 }  // namespace sc
