@@ -35,6 +35,24 @@ TestTrial test_trial_of(const SessionReview& review, const records::StoredTrial&
   return test;
 }
 
+// The trial and steps of `skill`'s largest penalty, if it has one.
+std::optional<SkillPlace> place_of(const SessionReview& review, const std::vector<TestTrial>& tests,
+                                   const std::vector<const records::StoredTrial*>& pretest,
+                                   const PlacedDiagnosis& placed, int skill) {
+  for (const TargetWhy& why : placed.expertise.why) {
+    if (why.skill != skill || why.reason == TargetReason::NoMistake) continue;
+    const auto t = static_cast<std::size_t>(why.trial);
+    const Json scenario = Json::parse(pretest.at(t)->record.scenario_json);
+    const auto& pool = review.kit().expert_pool();
+    const int index = tests.at(t).scenario;
+    return SkillPlace{
+        pretest[t]->seq, why.learner_begin,
+        why.learner_end, placed.learner_steps.at(t),
+        tests[t].trial,  index >= 0 ? pool.at(static_cast<std::size_t>(index)).trial : review.expert_for(scenario)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
@@ -50,7 +68,8 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
   } catch (const Json::exception& e) {
     throw InputError(where, std::string("has a pre-test trial that is not JSON: ") + e.what());
   }
-  const ExpertiseEstimate now = diagnose_trials(review.kit(), tests);
+  const PlacedDiagnosis placed = diagnosis_with_places(review.kit(), tests);
+  const ExpertiseEstimate& now = placed.expertise.estimate;
   ExpertiseEstimate before;
   std::vector<int> stored_targets;  // the trainer's own record of its choice (the targets column)
   try {
@@ -86,6 +105,7 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
     s.occurrences = now.occurrences[static_cast<std::size_t>(m)];
     for (const ExpertiseContribution& c : now.contributions[static_cast<std::size_t>(m)])
       s.missed.push_back({pretest[static_cast<std::size_t>(c.trial)]->seq, c.position, c.reward, c.delta, c.execution});
+    s.place = place_of(review, tests, pretest, placed, m);
     out.skills.push_back(std::move(s));
   }
   return out;

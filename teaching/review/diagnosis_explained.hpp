@@ -5,6 +5,8 @@
 // the pre-test trials that missed it (or, quality-aware, did it badly) are listed with their Δ
 // (Δ = −r / j: r the trial's reward, j the skill's position in the expert's sequence; done badly: −q / j). The
 // recomputed expertise is compared with the stored diagnosis, so a model or extractor change since the session shows.
+// Each targeted skill also says where its largest penalty happened (the trial and the learner's steps aligned with
+// the expert's segment), as the trainer's diagnosis page pictures it.
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,12 +25,23 @@ struct MissedSkillTrial {
   bool execution = false;  // quality-aware expertise: shown but done badly, not missing
 };
 
+// Where a skill's largest penalty happened (TargetWhy), with what it takes to picture it.
+struct SkillPlace {
+  int seq = 0;            // the pre-test trial
+  int learner_begin = 0;  // the learner's steps aligned with the expert's segment [begin, end)
+  int learner_end = 0;
+  int learner_steps = 0;  // the trial's step count
+  Json learner_trial;     // the learner's trial document
+  Json expert_trial;      // the expert's trial of the same scenario
+};
+
 struct SkillExplanation {
   int skill = 0;
   std::string description;
   double expertise = 0.0;                // recomputed E_m = −Σ Δ
   int occurrences = 0;                   // how often the expert used the skill in these scenarios
   std::vector<MissedSkillTrial> missed;  // trial order
+  std::optional<SkillPlace> place;       // none when nothing was charged
 };
 
 struct DiagnosisExplanation {

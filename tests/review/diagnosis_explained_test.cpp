@@ -37,5 +37,27 @@ TEST(DiagnosisExplained, RecomputesTheStoredDiagnosisAndListsTheMisses) {
   EXPECT_FALSE(e.skills.front().missed.empty());
 }
 
+TEST(DiagnosisExplained, EachChargedTargetSaysWhereItsLargestPenaltyHappened) {
+  const auto& f = test::parking_review_fixture();
+  const records::LearnerStore store(f.data_dir, records::StoreOptions{.read_only = true});
+  const SessionReview review(test::parking_kit(), load_session_record(store, f.session_id));
+  const DiagnosisExplanation e = explain_diagnosis(review);
+  int placed = 0;
+  for (const auto& s : e.skills) {
+    ASSERT_EQ(s.place.has_value(), !s.missed.empty()) << "skill " << s.skill;
+    if (!s.place) continue;
+    ++placed;
+    const auto largest = std::max_element(s.missed.begin(), s.missed.end(),
+                                          [](const auto& a, const auto& b) { return a.delta < b.delta; });
+    EXPECT_EQ(s.place->seq, largest->seq);
+    EXPECT_GE(s.place->learner_begin, 0);
+    EXPECT_LE(s.place->learner_begin, s.place->learner_end);
+    EXPECT_LE(s.place->learner_end, s.place->learner_steps);
+    EXPECT_EQ(s.place->learner_trial.at("task"), "parking");
+    EXPECT_EQ(s.place->expert_trial.at("scenario"), s.place->learner_trial.at("scenario"));
+  }
+  EXPECT_GT(placed, 0);
+}
+
 }  // namespace
 }  // namespace sc::review

@@ -9,6 +9,7 @@
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screens/learn_hand_picture.hpp"
+#include "app/gui/screens/learn_skill_picture.hpp"
 #include "engine/review_view/review_palette.hpp"
 
 namespace sc {
@@ -33,6 +34,24 @@ std::string fitted_to_width(const std::string& text, float width) {
 void world_frame(UiContext& ui, float x, float y, float w, float h) {
   ImGui::GetBackgroundDrawList()->AddRect({x, y}, {x + w, y + h}, IM_COL32(60, 68, 82, 255), 0.0f, 0,
                                           1.0f * ui.ui_scale);
+}
+
+// Where a target's largest penalty happened: the pre-test trial over the expert's, the part aligned with the expert's
+// segment in orange; pointing at it shows it larger.
+void draw_skill_place(const review::SkillPlace& place, const std::string& skill, float scale) {
+  const ImVec2 size(150 * scale, 64 * scale);
+  const std::string label = "trial " + std::to_string(place.seq);
+  const auto draw = [&](ImDrawList& d, ImVec2 at, ImVec2 box) {
+    draw_trial_part_picture(d, at, box, place.learner_trial, place.expert_trial, place.learner_begin, place.learner_end,
+                            place.learner_steps, label.c_str());
+  };
+  draw(*ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), size);
+  ImGui::Dummy(size);
+  enlarge_on_hover("Pre-test trial " + std::to_string(place.seq) +
+                       " in yellow, over the expert's in blue. Orange: the part that lines up with where the expert "
+                       "does \"" +
+                       skill + "\" (this skill's largest penalty)",
+                   size, draw, 3.5f);
 }
 
 }  // namespace
@@ -277,6 +296,11 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       ImGui::PushFont(ui.fonts.bold);
       ImGui::Text("skill %d: %s", skill.skill, skill.description.c_str());
       ImGui::PopFont();
+      if (skill.place) {
+        draw_skill_place(*skill.place, skill.description, ui.ui_scale);
+        ImGui::SameLine(0, 12 * ui.ui_scale);
+      }
+      ImGui::BeginGroup();
       ImGui::Text("E = %.3f, used %d time%s by the expert", skill.expertise, skill.occurrences,
                   skill.occurrences == 1 ? "" : "s");
       if (skill.missed.empty()) ImGui::TextDisabled("Never missed (a target by rank among equals).");
@@ -286,6 +310,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
                            m.execution ? "done badly" : "missed", m.seq, m.position, m.execution ? "q" : "r", m.reward,
                            m.delta);
       }
+      ImGui::EndGroup();
     }
   }
   ImGui::PopTextWrapPos();
