@@ -5,7 +5,9 @@
 //    screenshot command shows it (label: the screen and the GL backend):
 //      free_drive    the free-drive screen, its simulation advancing one step per frame;
 //      learn_trial   a parking practice trial being driven, the expert's ghost path over the lot;
-//      review_trial  the instructor's trial viewer (trail, ghost ribbon, skill markers, charts).
+//      review_trial  the instructor's trial viewer (trail, ghost ribbon, skill markers, charts);
+//      learn_diagnosis, learn_diagnosis_writing_hand13  the diagnosis page (a picture of each skill and of where
+//                    it went wrong; writing: in drawer 13's hand, so the hand's two pictures as well).
 //    The trial and review screens are timed with the clock held (no simulation step), so every iteration
 //    draws the same frame however many iterations the library runs;
 //  * render/renderer2d_lot_scene_1280x720: Renderer2D alone on a parking-lot-like scene (30 spot
@@ -39,7 +41,8 @@ std::unique_ptr<sc::GlContext> offscreen_context(benchmark::State& state) {
   }
 }
 
-void BM_ScreenFrame(benchmark::State& state, const char* screen, bool advance_clock) {
+void BM_ScreenFrame(benchmark::State& state, const char* screen, bool advance_clock,
+                    sc::TaskKind task = sc::TaskKind::parking, int learner_hand = 0) {
   auto context = offscreen_context(state);
   if (!context) return;
   if (!sc::Navigator::is_available(screen)) {
@@ -48,6 +51,9 @@ void BM_ScreenFrame(benchmark::State& state, const char* screen, bool advance_cl
   }
   sc::AppServices services;
   services.headless = true;
+  services.task = task;
+  services.screenshot_learner_hand = learner_hand;
+  if (task == sc::TaskKind::writing) services.device.kind = sc::DeviceKind::mouse_pen;
   sc::ScreenHost host(*context, services, screen);
   const sc::FrameInput input;
   for (int warmup = 0; warmup < 3; ++warmup) {  // ImGui's first frames differ (window sizes settle)
@@ -79,6 +85,14 @@ BENCHMARK_CAPTURE(BM_ScreenFrame, learn_trial, "learn_trial", false)
     ->UseRealTime();
 BENCHMARK_CAPTURE(BM_ScreenFrame, review_trial, "review_trial", false)
     ->Name("render/frame_1280x720/review_trial")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ScreenFrame, learn_diagnosis, "learn_diagnosis", false)
+    ->Name("render/frame_1280x720/learn_diagnosis")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ScreenFrame, learn_diagnosis_writing, "learn_diagnosis", false, sc::TaskKind::writing, 13)
+    ->Name("render/frame_1280x720/learn_diagnosis_writing_hand13")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -13,6 +13,7 @@
 
 #include "app/gui/navigator.hpp"
 #include "app/gui/screen.hpp"
+#include "app/gui/screens/learn_diagnosis_pictures.hpp"
 #include "app/gui/screens/learn_flow.hpp"
 #include "app/gui/screens/learn_hand_picture.hpp"
 #include "app/gui/screens/learn_skill_picture.hpp"
@@ -129,7 +130,7 @@ class LearnDiagnosisScreen final : public Screen {
       const bool drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
         return std::find(it.target_skills.begin(), it.target_skills.end(), m) != it.target_skills.end();
       });
-      draw_row_pictures(d, pic, s, places ? placed : nullptr, m, drilled, sc);
+      pictures_.draw_row(d, pic, s, places ? placed : nullptr, m, drilled, sc);
       ImGui::SameLine(0, 14 * sc);
       ImGui::BeginGroup();
       const std::string words = kit.describe_skill(m);
@@ -197,64 +198,13 @@ class LearnDiagnosisScreen final : public Screen {
     return ImGui::GetCursorPosY() - top;
   }
 
-  // A row's pictures: the skill as the expert does it and, with `placed`, where the learner's pre-test went wrong.
-  // Each is small beside its bar, so pointing at it shows it four times as large with what it shows in words.
-  static void draw_row_pictures(ImDrawList& d, ImVec2 pic, const TrainingSession& s, const PlacedDiagnosis* placed,
-                                int skill, bool drilled, float sc) {
-    const TaskKit& kit = s.kit();
-    const auto example = example_of_skill(kit.expert_pool(), skill);
-    const auto draw_example = [&](ImDrawList& list, ImVec2 at, ImVec2 size) {
-      if (example)
-        draw_skill_picture(list, at, size, kit.expert_pool()[static_cast<std::size_t>(example->expert)],
-                           example->segment, drilled);
-    };
-    draw_example(d, ImGui::GetCursorScreenPos(), pic);
-    ImGui::Dummy(pic);
-    if (example)
-      enlarge_on_hover("How the expert does \"" + kit.describe_skill(skill) +
-                           "\": the coloured part, ending at the dot; in grey, the rest of the expert's trial",
-                       pic, draw_example);
-    if (!placed) return;
-    ImGui::SameLine(0, 6 * sc);
-    const auto draw_where = [&](ImDrawList& list, ImVec2 at, ImVec2 size) {
-      draw_place(list, at, size, s, *placed, skill);
-    };
-    draw_where(d, ImGui::GetCursorScreenPos(), pic);
-    ImGui::Dummy(pic);
-    if (const TargetWhy* why = place_of(*placed, skill))
-      enlarge_on_hover("Your pre-test trial " + std::to_string(why->trial + 1) +
-                           " in yellow, over the expert's in blue. Orange: the part of yours that lines up with where "
-                           "the expert does \"" +
-                           kit.describe_skill(skill) + "\"",
-                       pic, draw_where);
-  }
-
-  // The learner's trial of the skill's largest penalty, the part aligned with the expert's segment in orange.
-  static const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill) {
-    const auto& why = placed.expertise.why;
-    const auto it = std::find_if(why.begin(), why.end(), [skill](const TargetWhy& w) {
-      return w.skill == skill && w.reason != TargetReason::NoMistake;
-    });
-    return it == why.end() ? nullptr : &*it;
-  }
-
-  static void draw_place(ImDrawList& d, ImVec2 at, ImVec2 size, const TrainingSession& s, const PlacedDiagnosis& placed,
-                         int skill) {
-    const TargetWhy* it = place_of(placed, skill);
-    if (!it) return;
-    const auto trial = static_cast<std::size_t>(it->trial);
-    const ExpertDemo& expert = s.kit().expert_pool().at(static_cast<std::size_t>(s.pretest_pool_indices().at(trial)));
-    const std::string label = "trial " + std::to_string(it->trial + 1);
-    draw_trial_part_picture(d, at, size, s.pretest_trials().at(trial), expert.trial, it->learner_begin, it->learner_end,
-                            placed.learner_steps.at(trial), label.c_str());
-  }
-
   AppServices& services_;
   LearnFlow& flow_;
   int hand_round_ = -1;
   const TrainingSession* hand_session_ = nullptr;
   std::vector<double> hand_for_;  // the diagnosis shown when hand_ was drawn from it
   std::optional<LearnerHandTraces> hand_;
+  DiagnosisRowPictures pictures_;
   int frames_ = 0;
   bool confirm_ = false;
 };

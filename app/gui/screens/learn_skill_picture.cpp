@@ -14,12 +14,6 @@
 namespace sc {
 namespace {
 
-// Points of the whole trajectory and the index range of the segment within them.
-struct Polyline {
-  std::vector<ImVec2> points;
-  std::size_t first = 0, last = 0;
-};
-
 TaskKind task_of(const Json& trial) { return parse_task_kind(trial.value("task", ""), "trial: $.task"); }
 
 std::vector<ImVec2> trial_points(const Json& trial) {
@@ -52,20 +46,24 @@ std::pair<std::size_t, std::size_t> point_range(TaskKind task, int begin, int en
   return {std::min(first, last), last};
 }
 
-Polyline polyline_of(const ExpertDemo& demo, const SkillSegment& segment) {
-  Polyline out;
-  out.points = trial_points(demo.trial);
+}  // namespace
+
+SkillPictureData skill_picture_data(const ExpertDemo& demo, const SkillSegment& segment) {
+  SkillPictureData out{trial_points(demo.trial)};
   std::tie(out.first, out.last) =
       point_range(task_of(demo.trial), segment.begin, segment.end, demo.steps.length(), out.points.size());
   return out;
 }
 
-}  // namespace
+TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Json& expert_trial, int begin, int end,
+                                             int steps) {
+  TrialPartPictureData out{trial_points(learner_trial), trial_points(expert_trial)};
+  std::tie(out.first, out.last) = point_range(task_of(learner_trial), begin, end, steps, out.learner.size());
+  return out;
+}
 
-void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& demo, const SkillSegment& segment,
-                        bool highlight) {
+void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const SkillPictureData& line, bool highlight) {
   d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
-  const Polyline line = polyline_of(demo, segment);
   if (line.points.size() < 2) return;
   ImVec2 lo = line.points[0], hi = line.points[0];
   for (const ImVec2& p : line.points) {
@@ -86,19 +84,22 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
 }
 
-void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial,
-                             int begin, int end, int steps, const char* label) {
-  const std::vector<ImVec2> learner = trial_points(learner_trial), expert = trial_points(expert_trial);
+void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& demo, const SkillSegment& segment,
+                        bool highlight) {
+  draw_skill_picture(d, o, size, skill_picture_data(demo, segment), highlight);
+}
+
+void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const TrialPartPictureData& picture,
+                             const char* label) {
   review_view::OverlayBounds bounds;
-  bounds.include(learner);
-  bounds.include(expert);
-  review_view::draw_overlay_points(d, o, size, learner, expert, bounds, review_view::kOverlayGuide);
-  const auto [first, last] = point_range(task_of(learner_trial), begin, end, steps, learner.size());
-  if (last > first) {
-    const std::vector<ImVec2> part =
-        review_view::fit_into_box(std::vector<ImVec2>(learner.begin() + static_cast<std::ptrdiff_t>(first),
-                                                      learner.begin() + static_cast<std::ptrdiff_t>(last) + 1),
-                                  o, size, bounds);
+  bounds.include(picture.learner);
+  bounds.include(picture.expert);
+  review_view::draw_overlay_points(d, o, size, picture.learner, picture.expert, bounds, review_view::kOverlayGuide);
+  if (picture.last > picture.first) {
+    const std::vector<ImVec2> part = review_view::fit_into_box(
+        std::vector<ImVec2>(picture.learner.begin() + static_cast<std::ptrdiff_t>(picture.first),
+                            picture.learner.begin() + static_cast<std::ptrdiff_t>(picture.last) + 1),
+        o, size, bounds);
     review_view::draw_thick_path(d, part, IM_COL32(255, 140, 66, 255), 4.0f);
   }
   // The label on a dark patch in the top left corner, at 80 % of the text size.
@@ -106,6 +107,11 @@ void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& l
   const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label);
   d.AddRectFilled(o, ImVec2(o.x + text.x + 8.0f, o.y + text.y + 4.0f), IM_COL32(28, 33, 43, 220), 6.0f);
   d.AddText(ImGui::GetFont(), font, ImVec2(o.x + 4.0f, o.y + 2.0f), IM_COL32(200, 208, 220, 255), label);
+}
+
+void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial,
+                             int begin, int end, int steps, const char* label) {
+  draw_trial_part_picture(d, o, size, trial_part_picture_data(learner_trial, expert_trial, begin, end, steps), label);
 }
 
 void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {

@@ -11,11 +11,31 @@
 
 namespace sc {
 
+// What the pictures draw, read from trial documents once: reading a document (and re-simulating a parking path)
+// takes about a millisecond a picture, too much to repeat every frame for a page of them (docs/rendering.md).
+struct SkillPictureData {
+  std::vector<ImVec2> points;       // the expert's whole trial
+  std::size_t first = 0, last = 0;  // the segment's points
+};
+SkillPictureData skill_picture_data(const ExpertDemo& demo, const SkillSegment& segment);
+
+struct TrialPartPictureData {
+  std::vector<ImVec2> learner, expert;  // both whole trials
+  std::size_t first = 0, last = 0;      // the part's points of `learner`
+};
+// The learner's control steps [begin, end) of its `steps`.
+TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Json& expert_trial, int begin, int end,
+                                             int steps);
+
+void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const SkillPictureData& picture,
+                        bool highlight);
 void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertDemo& demo,
                         const SkillSegment& segment, bool highlight);
 
 // Where a diagnosis target went wrong: the learner's trial in yellow over the expert's path of the same scenario
-// (a faint band), the learner's control steps [begin, end) of its `steps` in orange, `label` in the corner.
+// (a faint band), the part in orange, `label` in the corner.
+void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const TrialPartPictureData& picture,
+                             const char* label);
 void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
                              const Json& expert_trial, int begin, int end, int steps, const char* label);
 

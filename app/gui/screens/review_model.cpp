@@ -5,6 +5,7 @@
 #include "teaching/records/data_dir.hpp"
 #include "teaching/records/open_record_store.hpp"
 #include "teaching/review/practice_rounds.hpp"
+#include "teaching/sessions/session_analysis.hpp"
 
 namespace sc {
 
@@ -61,6 +62,8 @@ void ReviewModel::select_session(std::int64_t id) {
     chart_.reset();
     diagnosis_.reset();
     diagnosis_tried_ = false;
+    place_pictures_.clear();
+    skill_pictures_.clear();
     diagnosis_problem.clear();
     practice_lines_.reset();
     if (!session_->record().trials.empty()) select_trial(session_->record().trials.front().seq);
@@ -137,6 +140,33 @@ const review::DiagnosisExplanation* ReviewModel::diagnosis() {
     }
   }
   return diagnosis_ ? &*diagnosis_ : nullptr;
+}
+
+const SkillPictureData* ReviewModel::skill_picture(int skill) {
+  if (!session_) return nullptr;
+  auto found = skill_pictures_.find(skill);
+  if (found == skill_pictures_.end()) {
+    const auto& pool = session_->kit().expert_pool();
+    std::optional<SkillPictureData> picture;
+    if (const auto example = example_of_skill(pool, skill))
+      picture = skill_picture_data(pool[static_cast<std::size_t>(example->expert)], example->segment);
+    found = skill_pictures_.emplace(skill, std::move(picture)).first;
+  }
+  return found->second ? &*found->second : nullptr;
+}
+
+const TrialPartPictureData* ReviewModel::place_picture(int skill) {
+  if (const auto found = place_pictures_.find(skill); found != place_pictures_.end()) return &found->second;
+  const review::DiagnosisExplanation* d = diagnosis();
+  if (!d) return nullptr;
+  for (const review::SkillExplanation& s : d->skills)
+    if (s.skill == skill && s.place)
+      return &place_pictures_
+                  .emplace(skill, trial_part_picture_data(s.place->learner_trial, s.place->expert_trial,
+                                                          s.place->learner_begin, s.place->learner_end,
+                                                          s.place->learner_steps))
+                  .first->second;
+  return nullptr;
 }
 
 const std::vector<std::string>& ReviewModel::practice_lines() {

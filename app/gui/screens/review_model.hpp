@@ -12,6 +12,7 @@
 
 #include "app/core/review_pictures.hpp"
 #include "app/gui/app_services.hpp"
+#include "app/gui/screens/learn_skill_picture.hpp"
 #include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/review_playback.hpp"
 #include "teaching/review/session_filter.hpp"
@@ -55,6 +56,11 @@ class ReviewModel {
   const review_view::ExpertiseChart* expertise_chart();
   const review::DiagnosisExplanation* diagnosis();
   std::string diagnosis_problem;
+  // The picture of `skill` as the expert does it (its longest segment in the session's pool), read once; null when
+  // the pool has none.
+  const SkillPictureData* skill_picture(int skill);
+  // The picture of where a target of diagnosis() went wrong (its SkillPlace), read once; null without one.
+  const TrialPartPictureData* place_picture(int skill);
   // One line per round: practice planned and played against the budget (review::practice_round_text).
   const std::vector<std::string>& practice_lines();
 
@@ -75,6 +81,8 @@ class ReviewModel {
   std::optional<review_view::ExpertiseChart> chart_;
   std::optional<review::DiagnosisExplanation> diagnosis_;
   bool diagnosis_tried_ = false;
+  std::map<int, TrialPartPictureData> place_pictures_;
+  std::map<int, std::optional<SkillPictureData>> skill_pictures_;
   std::optional<std::vector<std::string>> practice_lines_;
 };
 

@@ -38,12 +38,12 @@ void world_frame(UiContext& ui, float x, float y, float w, float h) {
 
 // Where a target's largest penalty happened: the pre-test trial over the expert's, the part aligned with the expert's
 // segment in orange; pointing at it shows it larger.
-void draw_skill_place(const review::SkillPlace& place, const std::string& skill, float scale) {
+void draw_skill_place(const review::SkillPlace& place, const TrialPartPictureData& picture, const std::string& skill,
+                      float scale) {
   const ImVec2 size(150 * scale, 64 * scale);
   const std::string label = "trial " + std::to_string(place.seq);
   const auto draw = [&](ImDrawList& d, ImVec2 at, ImVec2 box) {
-    draw_trial_part_picture(d, at, box, place.learner_trial, place.expert_trial, place.learner_begin, place.learner_end,
-                            place.learner_steps, label.c_str());
+    draw_trial_part_picture(d, at, box, picture, label.c_str());
   };
   draw(*ImGui::GetWindowDrawList(), ImGui::GetCursorScreenPos(), size);
   ImGui::Dummy(size);
@@ -296,8 +296,8 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       ImGui::PushFont(ui.fonts.bold);
       ImGui::Text("skill %d: %s", skill.skill, skill.description.c_str());
       ImGui::PopFont();
-      if (skill.place) {
-        draw_skill_place(*skill.place, skill.description, ui.ui_scale);
+      if (const TrialPartPictureData* picture = skill.place ? model.place_picture(skill.skill) : nullptr) {
+        draw_skill_place(*skill.place, *picture, skill.description, ui.ui_scale);
         ImGui::SameLine(0, 12 * ui.ui_scale);
       }
       ImGui::BeginGroup();

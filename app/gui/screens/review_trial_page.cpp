@@ -11,7 +11,6 @@
 #include "app/gui/screens/learn_skill_picture.hpp"
 #include "app/gui/screens/review_pages.hpp"
 #include "engine/review_view/review_palette.hpp"
-#include "teaching/sessions/session_analysis.hpp"
 
 namespace sc {
 namespace {
@@ -80,18 +79,25 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
   std::set<int> skills;
   for (const auto* spans : {&trial.learner_skills, &trial.expert_skills, &trial.ghost_skills})
     for (const auto& span : *spans) skills.insert(span.skill);
-  const auto& pool = model.session()->kit().expert_pool();
   const ImVec2 thumb(84 * s, 50 * s);
   for (int skill : skills) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImDrawList& dl = *ImGui::GetWindowDrawList();
-    if (const auto example = example_of_skill(pool, skill))
-      draw_skill_picture(dl, at, thumb, pool[static_cast<std::size_t>(example->expert)], example->segment, false);
+    const std::string words = model.session()->kit().describe_skill(skill);
+    if (const SkillPictureData* picture = model.skill_picture(skill)) {
+      const auto draw = [picture](ImDrawList& d, ImVec2 top_left, ImVec2 size) {
+        draw_skill_picture(d, top_left, size, *picture, false);
+      };
+      draw(dl, at, thumb);
+      ImGui::Dummy(thumb);
+      enlarge_on_hover("How the expert does \"" + words + "\": the coloured part, ending at the dot", thumb, draw);
+      ImGui::SetCursorScreenPos(at);
+    }
     dl.AddRectFilled({at.x + thumb.x + 8 * s, at.y + 4 * s}, {at.x + thumb.x + 22 * s, at.y + 18 * s},
                      review_view::skill_color_u32(skill), 3.0f);
     ImGui::SetCursorScreenPos({at.x + thumb.x + 28 * s, at.y});
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::Text("%d  %s", skill, model.session()->kit().describe_skill(skill).c_str());
+    ImGui::Text("%d  %s", skill, words.c_str());
     ImGui::PopTextWrapPos();
     ImGui::SetCursorScreenPos({at.x, at.y + thumb.y + 6 * s});
   }
