@@ -108,11 +108,17 @@ void ImGuiLayer::rebuild_fonts_and_style(float scale) {
   apply_skillcoach_style(ImGui::GetStyle(), scale);
 }
 
+void ImGuiLayer::hold_scale(float scale) {
+  held_scale_ = std::clamp(scale, 0.75f, 4.0f);
+  make_current();
+  if (*held_scale_ != scale_) rebuild_fonts_and_style(*held_scale_);
+}
+
 void ImGuiLayer::begin_frame(double dt_seconds) {
   make_current();
   context_.make_current();
   const int w = context_.width(), h = context_.height();
-  if (const float wanted = scale_for_height(h); wanted != scale_) rebuild_fonts_and_style(wanted);
+  if (const float wanted = held_scale_.value_or(scale_for_height(h)); wanted != scale_) rebuild_fonts_and_style(wanted);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(w), static_cast<float>(h));
   io.DisplayFramebufferScale = ImVec2(1, 1);

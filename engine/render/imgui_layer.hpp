@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <memory>
+#include <optional>
 
 #include "engine/render/gl_context.hpp"
 #include "engine/render/imgui_solid_fills.hpp"
@@ -33,6 +34,10 @@ class ImGuiLayer {
   // the font atlas is not rebuilt on every pixel of a window resize).
   static float scale_for_height(int framebuffer_height);
 
+  // Keeps `scale` from now on, whatever the framebuffer's height: for an image whose height follows its content
+  // (a scale that followed the height would grow the content past it).
+  void hold_scale(float scale);
+
   // Sets the display size and time step, rebuilds fonts/style when the scale changed, calls ImGui::NewFrame().
   void begin_frame(double dt_seconds);
   // ImGui::Render() and draws it into the context's target framebuffer.
@@ -49,6 +54,7 @@ class ImGuiLayer {
   GlContext& context_;
   ImGuiContext* imgui_ = nullptr;
   float scale_ = 0;
+  std::optional<float> held_scale_;
   UiFonts fonts_;
   std::unique_ptr<ImGuiSolidFills> solid_fills_;
 };

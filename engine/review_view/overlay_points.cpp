@@ -82,4 +82,15 @@ void draw_hand_overlay(ImDrawList& d, ImVec2 first, ImVec2 second, ImVec2 box, c
   draw_overlay_points(d, second, box, overlay.learner, overlay.hand, bounds, kOverlayHand);
 }
 
+void draw_part_overlay(ImDrawList& d, ImVec2 o, ImVec2 size, const PartOverlay& overlay) {
+  OverlayBounds bounds;
+  bounds.include(overlay.learner);
+  bounds.include(overlay.expert);
+  draw_overlay_points(d, o, size, overlay.learner, overlay.expert, bounds, kOverlayGuide);
+  if (overlay.last <= overlay.first || overlay.last >= overlay.learner.size()) return;
+  const std::vector<ImVec2> part(overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.first),
+                                 overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.last) + 1);
+  draw_thick_path(d, fit_into_box(part, o, size, bounds), kOverlayPart, 4.0f);
+}
+
 }  // namespace sc::review_view

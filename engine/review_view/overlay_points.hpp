@@ -4,6 +4,7 @@
 // the task's own coordinates; pictures side by side share one scale by sharing their bounds.
 #include <imgui.h>
 
+#include <cstddef>
 #include <vector>
 
 namespace sc::review_view {
@@ -11,6 +12,7 @@ namespace sc::review_view {
 inline constexpr ImU32 kOverlayLearner = IM_COL32(255, 226, 138, 235);  // the learner's path (yellow)
 inline constexpr ImU32 kOverlayGuide = IM_COL32(91, 155, 255, 80);      // the expert's path or the guide (blue band)
 inline constexpr ImU32 kOverlayHand = IM_COL32(120, 220, 170, 90);      // the learner's hand (green band)
+inline constexpr ImU32 kOverlayPart = IM_COL32(255, 140, 66, 255);      // a part of the learner's path (orange)
 
 // The joint bounds of several point sets.
 struct OverlayBounds {
@@ -30,6 +32,14 @@ void draw_thick_path(ImDrawList& draw_list, const std::vector<ImVec2>& points, I
 // Nothing but the box when either path has fewer than two points.
 void draw_overlay_points(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const std::vector<ImVec2>& learner,
                          const std::vector<ImVec2>& reference, const OverlayBounds& bounds, ImU32 band);
+
+// Where a diagnosis target went wrong: the learner's trial over the expert's of the same scenario, and the
+// learner's points [first, last] (the part aligned with the expert's segment) in orange over them.
+struct PartOverlay {
+  std::vector<ImVec2> learner, expert;
+  std::size_t first = 0, last = 0;
+};
+void draw_part_overlay(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const PartOverlay& overlay);
 
 // The learner's own hand (teaching/sessions/learner_hand_traces.hpp): one pre-test trial, its guide and the
 // hand taken, in the task's coordinates.

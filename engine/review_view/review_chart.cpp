@@ -43,10 +43,14 @@ float titles_height(const ExpertiseChart& chart, ImFont* bold, float wrap) {
 
 }  // namespace
 
+// The least height of one round's bar: 14 px at scale 1, and never less than its value label's line, or the labels
+// of several rounds overlap.
+float least_bar(float scale) { return std::max(14.0f * scale, ImGui::GetFontSize() + 2.0f * scale); }
+
 float expertise_chart_height(const ExpertiseChart& chart, float scale, float width, ImFont* bold) {
-  const float bars = 14.0f * scale * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
+  const float bars = least_bar(scale) * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
   return ImGui::GetFontSize() * 3.5f + titles_height(chart, bold, title_wrap_width(width, scale)) +
-         (18.0f * scale + bars) * static_cast<float>(chart.skills.size()) + 8.0f * scale;
+         (18.0f * scale + bars) * static_cast<float>(chart.skills.size()) + 2 * 14.0f * scale;  // the panel's pads
 }
 
 void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const ExpertiseChart& chart, float scale,
@@ -59,7 +63,7 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   const float bars = rows * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
   const float wrap = title_wrap_width(size.x, scale);
   const float fixed = fs * 3.5f + titles_height(chart, bold, wrap) + rows * 18.0f * scale + pad;
-  const float bar = std::clamp((size.y - fixed) / bars, 14.0f * scale, 40.0f * scale);
+  const float bar = std::clamp((size.y - fixed) / bars, least_bar(scale), std::max(least_bar(scale), 40.0f * scale));
   dl.AddRectFilled(p, {p.x + size.x, p.y + std::min(size.y, fixed + bars * bar + pad)}, kPanel, 8.0f * scale);
   const float left = p.x + pad, right = p.x + size.x - pad - 150.0f * scale;  // room for "-0.28   drilled"
   float y = p.y + pad * 0.6f;

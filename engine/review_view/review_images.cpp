@@ -1,6 +1,7 @@
 #include "engine/review_view/review_images.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 #include "engine/render/imgui_layer.hpp"
@@ -159,29 +160,71 @@ RgbaImage render_hand_image(GlContext& context, const HandOverlay& overlay, cons
       });
 }
 
-RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart& chart, const std::string& title,
-                                       int width) {
-  // The height depends on the font size, which depends on the height: size for 720 px (scale 1) fonts.
-  const float s = 1.0f;
-  const float title_h = 48.0f;
-  // Measured at scale 1: font 18 px (UiFonts::body).
-  const float fs = 18.0f;
-  const float rows = static_cast<float>(chart.skills.size());
-  const float bars = static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));
-  const int height = static_cast<int>(title_h + fs * 3.5f + rows * (fs + 6.0f + 14.0f * bars + 12.0f) + 24.0f);
-  const int image_height = std::max(height, 720);
+RgbaImage render_places_image(GlContext& context, const std::vector<PlacePicture>& places, const std::string& title,
+                              const std::vector<std::string>& lines, int width, int height) {
   return render(
-      context, width, image_height, [](Renderer2D&) {},
+      context, width, height, [](Renderer2D&) {},
       [&](ImGuiLayer& imgui) {
         ImDrawList& dl = *ImGui::GetBackgroundDrawList();
-        const float scale = imgui.scale();
-        dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f * scale, 12.0f * scale}, kCaptionText,
-                   title.c_str());
-        draw_expertise_chart(
-            dl, {12.0f * scale, title_h * scale},
-            {static_cast<float>(width) - 24.0f * scale, static_cast<float>(image_height) - (title_h + 12.0f) * scale},
-            chart, scale * s, imgui.fonts().bold);
+        const float s = imgui.scale(), fs = ImGui::GetFontSize();
+        const float x = 16.0f * s, wrap = static_cast<float>(width) - 32.0f * s;
+        float y = 14.0f * s;
+        dl.AddText(imgui.fonts().bold, fs, {x, y}, kCaptionText, title.c_str(), nullptr, wrap);
+        y += fs * 1.5f;
+        y = text_lines(dl, {x, y}, lines, wrap) + 6.0f * s;
+        float lx = x;
+        for (const auto& [color, width_px, label] :
+             {std::tuple{kOverlayLearner, 2.5f, "the learner's trial"},
+              std::tuple{kOverlayGuide, 7.0f, "the expert's, same scenario"},
+              std::tuple{kOverlayPart, 4.0f, "the part aligned with the expert's skill"}}) {
+          dl.AddLine({lx, y + fs * 0.5f}, {lx + fs * 1.6f, y + fs * 0.5f}, color, width_px * s);
+          dl.AddText({lx + fs * 2.1f, y}, kCaptionText, label);
+          lx += fs * 2.1f + ImGui::CalcTextSize(label).x + fs * 1.6f;
+        }
+        y += fs * 1.8f;
+        const std::size_t count = std::min(places.size(), kMaxPlaces);
+        const float gap = 16.0f * s, cell_w = (wrap - gap) * 0.5f;
+        const float rows = static_cast<float>((count + 1) / 2);
+        const float cell_h = rows > 0 ? (static_cast<float>(height) - y - 12.0f * s) / rows : 0.0f;
+        for (std::size_t i = 0; i < count; ++i) {
+          const ImVec2 at(x + static_cast<float>(i % 2) * (cell_w + gap), y + static_cast<float>(i / 2) * cell_h);
+          dl.AddText(imgui.fonts().bold, fs, at, kCaptionText, places[i].caption.c_str(), nullptr, cell_w);
+          const float caption_h =
+              imgui.fonts().bold->CalcTextSizeA(fs, 1e9f, cell_w, places[i].caption.c_str()).y + 6.0f * s;
+          const ImVec2 box(cell_w, std::max(cell_h - caption_h - gap, 40.0f * s));
+          draw_part_overlay(dl, {at.x, at.y + caption_h}, box, places[i].overlay);
+        }
       });
+}
+
+RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart& chart, const std::string& title,
+                                       int width) {
+  // Text at the 720-line size whatever the image's height: the height follows the chart, so a scale that followed
+  // the height would grow the chart past it. The first frame measures the chart in those fonts.
+  const float title_h = 48.0f, margin = 12.0f;
+  context.make_current();
+  context.resize(width, 720);
+  Renderer2D renderer(context);
+  ImGuiLayer imgui(context);
+  imgui.hold_scale(1.0f);
+  imgui.begin_frame(1.0 / 60.0);
+  const float chart_width = static_cast<float>(width) - 2 * margin;
+  const float chart_height = expertise_chart_height(chart, 1.0f, chart_width, imgui.fonts().bold);
+  imgui.end_frame();
+  const int height = std::max(720, static_cast<int>(std::ceil(title_h + chart_height + margin)));
+  context.resize(width, height);
+  for (int frame = 0; frame < 2; ++frame) {
+    renderer.begin_frame(kBackground);
+    renderer.end_frame();
+    imgui.begin_frame(1.0 / 60.0);
+    ImDrawList& dl = *ImGui::GetBackgroundDrawList();
+    dl.AddText(imgui.fonts().bold, ImGui::GetFontSize() * 1.2f, {16.0f, 12.0f}, kCaptionText, title.c_str());
+    draw_expertise_chart(dl, {margin, title_h}, {chart_width, static_cast<float>(height) - title_h - margin}, chart,
+                         1.0f, imgui.fonts().bold);
+    imgui.end_frame();
+  }
+  context.present();
+  return context.read_rgba();
 }
 
 }  // namespace sc::review_view

@@ -39,6 +39,15 @@ struct HandImageText {
 // The learner's word over the guide above the same word over the hand taken, at one scale.
 RgbaImage render_hand_image(GlContext& context, const HandOverlay& overlay, const HandImageText& text, int width,
                             int height);
+// Where the diagnosis' charged targets went wrong (the trainer's diagnosis page draws the same), in a grid of two
+// columns: each its caption over its PartOverlay. At most kMaxPlaces, the first ones.
+struct PlacePicture {
+  std::string caption;  // "skill 10: ... - missed in pre-test trial 3"
+  PartOverlay overlay;
+};
+inline constexpr std::size_t kMaxPlaces = 6;
+RgbaImage render_places_image(GlContext& context, const std::vector<PlacePicture>& places, const std::string& title,
+                              const std::vector<std::string>& lines, int width, int height);
 // Height follows the number of skills and rounds.
 RgbaImage render_expertise_chart_image(GlContext& context, const ExpertiseChart& chart, const std::string& title,
                                        int width);

@@ -103,6 +103,7 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
     h << "</td></tr>\n";
   }
   h << "</table>\n";
+  if (s.places_picture) image(h, *s.places_picture);
 }
 
 void trial_table(std::ostringstream& h, const SessionReport& s) {

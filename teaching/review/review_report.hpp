@@ -33,6 +33,7 @@ struct SessionReport {
   std::string diagnosis_note;                     // why there is none
   std::string extractor_notice;                   // the kit's fallback notice (e.g. no trained model), if any
   std::optional<ReportImage> hand_picture;        // the diagnosis took a hand of the learner's own (writing)
+  std::optional<ReportImage> places_picture;      // where the charged targets went wrong (SkillExplanation::place)
   std::optional<ReportImage> expertise_chart;
   std::vector<ReportImage> before_after;
   std::vector<ReportImage> trial_images;  // one per trial, in seq order

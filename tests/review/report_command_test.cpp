@@ -12,6 +12,7 @@
 #include "engine/render/rgba_image.hpp"
 #include "teaching/records/sqlite_handle.hpp"
 #include "teaching/review/before_after.hpp"
+#include "teaching/review/diagnosis_explained.hpp"
 #include "tests/review/review_fixture.hpp"
 #include "tests/support/run_skillcoach.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -64,6 +65,11 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
   pngs.insert(prefix + "expertise.png");
   for (const auto& g : review::before_after_groups(review::load_session_record(store, fixture.session_id)))
     pngs.insert(prefix + "before_after_" + g.family + ".png");
+  // The fixture's diagnosis charges a target, so the report pictures where (beside the diagnosis table).
+  const review::SessionReview review(test::parking_kit(), review::load_session_record(store, fixture.session_id));
+  const review::DiagnosisExplanation diagnosis = review::explain_diagnosis(review);
+  ASSERT_TRUE(std::any_of(diagnosis.skills.begin(), diagnosis.skills.end(), [](const auto& s) { return s.place; }));
+  pngs.insert(prefix + "where.png");
   std::set<std::string> written;
   for (const auto& entry : fs::directory_iterator(out)) written.insert(entry.path().filename().string());
   std::set<std::string> expected = pngs;
@@ -110,6 +116,10 @@ TEST_F(ReportCommand, WritesEveryPictureTheTablesAndASelfContainedPage) {
   EXPECT_NE(html.find("SkillCoach review: Ada"), std::string::npos);
   EXPECT_NE(html.find("The recomputation matches the stored diagnosis."), std::string::npos);
   EXPECT_NE(html.find("Missed or done badly in pre-test trials"), std::string::npos);
+  const auto table = html.find("<th>Targeted skill</th>"), where = html.find("(" + prefix + "where.png)");
+  ASSERT_NE(where, std::string::npos);
+  EXPECT_LT(table, where);
+  EXPECT_LT(where, html.find("(" + prefix + "expertise.png)"));
 }
 
 // A writing learner in unseen drawer 13's letters is given a training drawer's hand; the report pictures its first

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace sc::review_view {
@@ -79,6 +80,24 @@ TEST_F(OverlayPoints, TheHandPictureDrawsBothBoxesAtOneScale) {
   }
   EXPECT_NEAR(first_end, second_end, 0.5f);
   EXPECT_LT(first_end, 140.0f);  // the learner's 10 of 20 does not fill the 220 px box
+}
+
+TEST_F(OverlayPoints, ThePartOverlayDrawsOnlyThePartInOrangeAtTheWholeTrialsScale) {
+  // The learner along x = 0..40, the expert to x = 80; the part is the learner's points 2..4 (x = 20..40).
+  PartOverlay overlay{{{0, 0}, {10, 0}, {20, 0}, {30, 0}, {40, 0}}, {{0, 0}, {80, 0}}, 2, 4};
+  draw_part_overlay(*list_, {0, 0}, {180, 100}, overlay);
+  // 80 units over 160 px (a 10 px margin each side): the part spans x = 50..90 px, its 4 px core 2 px beyond.
+  const ImVec4 part = drawn_bounds(kOverlayPart);
+  EXPECT_NEAR(part.x, 50.0f, 2.5f);
+  EXPECT_NEAR(part.z, 90.0f, 2.5f);
+  // No part, no orange: an empty range or one past the learner's points.
+  for (const auto& [first, last] : {std::pair<std::size_t, std::size_t>{3, 3}, {2, 9}}) {
+    list_->_ResetForNewFrame();
+    overlay.first = first;
+    overlay.last = last;
+    draw_part_overlay(*list_, {0, 0}, {180, 100}, overlay);
+    EXPECT_GT(drawn_bounds(kOverlayPart).x, drawn_bounds(kOverlayPart).z) << first << ".." << last;
+  }
 }
 
 }  // namespace

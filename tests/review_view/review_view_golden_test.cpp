@@ -5,10 +5,16 @@
 // compiled into this test so the goldens show exactly what `skillcoach report` and the Review screens draw.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "app/core/review_pictures.hpp"
 #include "engine/render/gl_context.hpp"
+#include "engine/review_view/review_palette.hpp"
 #include "teaching/review/expertise_rounds.hpp"
 #include "tests/review/review_fixture.hpp"
 #include "tests/support/golden_image.hpp"
@@ -73,6 +79,31 @@ TEST_F(ReviewPictures, ExpertiseChartMatchesGolden) {
   const RgbaImage image = review_view::render_expertise_chart_image(*context_, expertise_chart(rounds),
                                                                     "Expertise per skill across rounds", kWidth);
   EXPECT_TRUE(test::matches_golden(image, "review/expertise_chart"));
+}
+
+// A chart of many skills and rounds grows its image and keeps its text at the 720-line size: every skill is in the
+// picture (before, the text grew with the height, and a 4-round parking chart lost its last skills off the bottom).
+TEST_F(ReviewPictures, AChartOfManySkillsAndRoundsKeepsEverySkillInItsImage) {
+  review_view::ExpertiseChart chart;
+  for (int r = 0; r < 6; ++r) chart.rounds.push_back("round " + std::to_string(r + 1));
+  for (int m = 0; m < 16; ++m)
+    chart.skills.push_back({m, "skill words " + std::to_string(m), std::vector<std::optional<double>>(6, -0.1 * m),
+                            std::vector<bool>(6, m % 2 == 0)});
+  chart.lowest = -1.5;
+  const RgbaImage image = review_view::render_expertise_chart_image(*context_, chart, "Many skills", kWidth);
+  EXPECT_GT(image.height, 2 * kHeight);
+  // The last skill's bars are drawn in its colour (its last round the brightest, opaque): find them in the
+  // bottom tenth of the image, and nothing but the background in its last rows.
+  const ImU32 last = review_view::skill_color_u32(15);
+  const auto channel = [](ImU32 c, int shift) { return static_cast<int>((c >> shift) & 0xFF); };
+  int found = 0;
+  for (int y = image.height * 9 / 10; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.at(x, y);
+      found += std::abs(p[0] - channel(last, 0)) <= 2 && std::abs(p[1] - channel(last, 8)) <= 2 &&
+               std::abs(p[2] - channel(last, 16)) <= 2;
+    }
+  EXPECT_GT(found, 1000);
 }
 
 }  // namespace

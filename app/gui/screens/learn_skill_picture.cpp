@@ -91,17 +91,7 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& 
 
 void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const TrialPartPictureData& picture,
                              const char* label) {
-  review_view::OverlayBounds bounds;
-  bounds.include(picture.learner);
-  bounds.include(picture.expert);
-  review_view::draw_overlay_points(d, o, size, picture.learner, picture.expert, bounds, review_view::kOverlayGuide);
-  if (picture.last > picture.first) {
-    const std::vector<ImVec2> part = review_view::fit_into_box(
-        std::vector<ImVec2>(picture.learner.begin() + static_cast<std::ptrdiff_t>(picture.first),
-                            picture.learner.begin() + static_cast<std::ptrdiff_t>(picture.last) + 1),
-        o, size, bounds);
-    review_view::draw_thick_path(d, part, IM_COL32(255, 140, 66, 255), 4.0f);
-  }
+  review_view::draw_part_overlay(d, o, size, picture);
   // The label on a dark patch in the top left corner, at 80 % of the text size.
   const float font = ImGui::GetFontSize() * 0.8f;
   const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/review_view/overlay_points.hpp"
 #include "teaching/sessions/session_analysis.hpp"
 
 namespace sc {
@@ -19,10 +20,8 @@ struct SkillPictureData {
 };
 SkillPictureData skill_picture_data(const ExpertDemo& demo, const SkillSegment& segment);
 
-struct TrialPartPictureData {
-  std::vector<ImVec2> learner, expert;  // both whole trials
-  std::size_t first = 0, last = 0;      // the part's points of `learner`
-};
+// Both whole trials, the part's points of the learner's.
+using TrialPartPictureData = review_view::PartOverlay;
 // The learner's control steps [begin, end) of its `steps`.
 TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Json& expert_trial, int begin, int end,
                                              int steps);

@@ -106,6 +106,15 @@ class ReportWriter {
                                               hand_image_text(row.learner, report.diagnosis->learner_hand),
                                               request_.image_width, request_.image_height),
                prefix + "hand.png", "The learner's own hand");
+    if (report.diagnosis)
+      if (const auto places = place_pictures(*report.diagnosis, trials); !places.empty())
+        report.places_picture =
+            save(review_view::render_places_image(
+                     context(), places, row.learner + ": where the targets went wrong",
+                     {"Each charged target's largest penalty: the pre-test trial it happened in over the expert's "
+                      "trial of the same scenario, the part aligned with the expert's skill in orange."},
+                     request_.image_width, request_.image_height),
+                 prefix + "where.png", "Where the targets went wrong");
     result_.trials += static_cast<int>(trials.size());
     return report;
   }
