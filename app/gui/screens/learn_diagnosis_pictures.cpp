@@ -12,6 +12,15 @@ const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill) {
   return it == why.end() ? nullptr : &*it;
 }
 
+std::string place_caption(int trial, const std::string& skill, TargetReason reason) {
+  const std::string lead = "Your pre-test trial " + std::to_string(trial) + " in yellow, over the expert's in blue. ";
+  if (reason == TargetReason::Missing)
+    return lead + "The skill model did not find \"" + skill +
+           "\" in it; in orange, the part of yours that lines up with where the expert does it.";
+  return lead + "In orange, the part of yours that lines up with where the expert does \"" + skill +
+         "\": done clearly worse than the rest of your trials.";
+}
+
 const DiagnosisRowPictures::Row& DiagnosisRowPictures::row(const TrainingSession& s, const PlacedDiagnosis* placed,
                                                            int skill) {
   if (session_ != &s || round_ != s.round() || expertise_ != s.diagnosis().expertise ||
@@ -33,6 +42,7 @@ const DiagnosisRowPictures::Row& DiagnosisRowPictures::row(const TrainingSession
     r.place = trial_part_picture_data(s.pretest_trials().at(trial), expert.trial, why->learner_begin, why->learner_end,
                                       placed->learner_steps.at(trial));
     r.place_trial = why->trial;
+    r.reason = why->reason;
   }
   return rows_.emplace(skill, std::move(r)).first->second;
 }
@@ -58,12 +68,7 @@ void DiagnosisRowPictures::draw_row(ImDrawList& d, ImVec2 pic, const TrainingSes
   };
   draw_where(d, ImGui::GetCursorScreenPos(), pic);
   ImGui::Dummy(pic);
-  if (r.place)
-    enlarge_on_hover("Your pre-test trial " + std::to_string(r.place_trial + 1) +
-                         " in yellow, over the expert's in blue. Orange: the part of yours that lines up with where "
-                         "the expert does \"" +
-                         words + "\"",
-                     pic, draw_where);
+  if (r.place) enlarge_on_hover(place_caption(r.place_trial + 1, words, r.reason), pic, draw_where);
 }
 
 }  // namespace sc

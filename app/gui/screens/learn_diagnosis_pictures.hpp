@@ -29,6 +29,7 @@ class DiagnosisRowPictures {
     std::optional<SkillPictureData> example;
     std::optional<TrialPartPictureData> place;
     int place_trial = 0;  // 0-based pre-test trial of `place`
+    TargetReason reason = TargetReason::NoMistake;
   };
   const Row& row(const TrainingSession& session, const PlacedDiagnosis* placed, int skill);
 
@@ -38,6 +39,9 @@ class DiagnosisRowPictures {
   bool placed_ = false;
   std::map<int, Row> rows_;
 };
+
+// What a "where" picture shows, by why the skill was charged there (pre-test trial `trial`, 1-based).
+std::string place_caption(int trial, const std::string& skill, TargetReason reason);
 
 // The skill's largest penalty in the pre-test, if it has one.
 const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill);
