@@ -45,7 +45,7 @@ float titles_height(const ExpertiseChart& chart, ImFont* bold, float wrap) {
 
 // The least height of one round's bar: 14 px at scale 1, and never less than its value label's line, or the labels
 // of several rounds overlap.
-float least_bar(float scale) { return std::max(14.0f * scale, ImGui::GetFontSize() + 2.0f * scale); }
+float least_bar(float scale) { return std::max(14.0f * scale, ImGui::GetFontSize()); }
 
 float expertise_chart_height(const ExpertiseChart& chart, float scale, float width, ImFont* bold) {
   const float bars = least_bar(scale) * static_cast<float>(std::max<std::size_t>(1, chart.rounds.size()));

@@ -15,7 +15,8 @@
 namespace sc {
 namespace {
 
-constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
+                                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove |
                                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 std::string session_label(const review::SessionListRow& row) {
@@ -56,10 +57,12 @@ void draw_skill_place(const review::SkillPlace& place, const TrialPartPictureDat
 
 }  // namespace
 
-void begin_review_panel(const char* id, float x, float y, float w, float h) {
+// A list that grows with the session (its trials, the diagnosis of many targets) shows a scrollbar once it is taller
+// than its panel: without one nothing says the rest is a wheel away. Panels of fixed content have none.
+void begin_review_panel(const char* id, float x, float y, float w, float h, bool scrolls) {
   ImGui::SetNextWindowPos({x, y}, ImGuiCond_Always);
   ImGui::SetNextWindowSize({w, h}, ImGuiCond_Always);
-  ImGui::Begin(id, nullptr, kPanelFlags);
+  ImGui::Begin(id, nullptr, kPanelFlags | (scrolls ? 0 : ImGuiWindowFlags_NoScrollbar));
 }
 
 void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
@@ -236,7 +239,7 @@ void draw_review_before_after(UiContext& ui, ReviewModel& model, std::size_t& gr
 void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   const float s = ui.ui_scale, top = kReviewTopBar * s;
   const float half = static_cast<float>(ui.width) * 0.5f;
-  begin_review_panel("review_chart", 0, top, half, static_cast<float>(ui.height) - top);
+  begin_review_panel("review_chart", 0, top, half, static_cast<float>(ui.height) - top, true);
   ImGui::PushFont(ui.fonts.bold);
   ImGui::TextUnformatted("Expertise per skill across rounds (stored diagnoses)");
   ImGui::PopFont();
@@ -255,7 +258,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
   }
   ImGui::End();
 
-  begin_review_panel("review_diagnosis", half, top, half, static_cast<float>(ui.height) - top);
+  begin_review_panel("review_diagnosis", half, top, half, static_cast<float>(ui.height) - top, true);
   ImGui::PushFont(ui.fonts.bold);
   ImGui::TextUnformatted("Diagnosis explained (round 1)");
   ImGui::PopFont();

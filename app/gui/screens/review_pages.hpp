@@ -19,6 +19,7 @@ void draw_review_before_after(UiContext& ui, ReviewModel& model, std::size_t& gr
 void draw_review_expertise(UiContext& ui, ReviewModel& model);
 
 // A fixed, undecorated window at (x, y) of size (w, h) in framebuffer pixels.
-void begin_review_panel(const char* id, float x, float y, float w, float h);
+// `scrolls`: a vertical scrollbar when the content is taller than the panel (lists that grow with the session).
+void begin_review_panel(const char* id, float x, float y, float w, float h, bool scrolls = false);
 
 }  // namespace sc

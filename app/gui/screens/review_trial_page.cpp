@@ -16,7 +16,11 @@ namespace sc {
 namespace {
 
 void draw_trial_list(UiContext& ui, ReviewModel& model, float x, float y, float w, float h) {
-  begin_review_panel("review_trials", x, y, w, h);
+  // Less side padding than the other panels, so the longest label ("11. practice of drill 3  -0.21") keeps its
+  // score beside the scrollbar of a long session.
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(12 * ui.ui_scale, ImGui::GetStyle().WindowPadding.y));
+  begin_review_panel("review_trials", x, y, w, h, true);
+  ImGui::PopStyleVar();
   ImGui::TextDisabled("Trials");
   const int current = model.trial() ? model.trial()->stored.seq : -1;
   for (const auto& t : model.session()->record().trials) {
@@ -25,7 +29,6 @@ void draw_trial_list(UiContext& ui, ReviewModel& model, float x, float y, float 
                               (t.record.score ? "  " + std::to_string(*t.record.score).substr(0, 5) : "");
     if (ImGui::Selectable(label.c_str(), t.seq == current)) model.select_trial(t.seq);
   }
-  (void)ui;
   ImGui::End();
 }
 
