@@ -120,32 +120,6 @@ review_view::HandOverlay hand_overlay(const LearnerHandTraces& traces) {
   return {points(traces.learner), points(traces.guide), points(traces.hand)};
 }
 
-std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExplanation& diagnosis,
-                                                      const std::vector<review::TrialReview>& trials) {
-  const auto points = [](const review::TrialTrack& track) {
-    std::vector<ImVec2> out;
-    for (const auto& p : track.points) out.emplace_back(static_cast<float>(p.x), static_cast<float>(p.y));
-    return out;
-  };
-  std::vector<review_view::PlacePicture> out;
-  for (const review::SkillExplanation& skill : diagnosis.skills) {
-    if (!skill.place || skill.missed.empty()) continue;
-    const review::TrialReview* trial = find_trial(trials, skill.place->seq);
-    if (!trial) continue;
-    const auto largest = std::max_element(skill.missed.begin(), skill.missed.end(),
-                                          [](const auto& a, const auto& b) { return a.delta < b.delta; });
-    review_view::PartOverlay overlay{points(trial->learner_track), points(trial->expert_track)};
-    const std::size_t last_point = overlay.learner.empty() ? 0 : overlay.learner.size() - 1;
-    overlay.last = std::min(static_cast<std::size_t>(std::max(skill.place->learner_end, 0)), last_point);
-    overlay.first = std::min(static_cast<std::size_t>(std::max(skill.place->learner_begin, 0)), overlay.last);
-    out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " +
-                       (largest->execution ? "done badly" : "missed") + " in pre-test trial " +
-                       std::to_string(skill.place->seq),
-                   std::move(overlay)});
-  }
-  return out;
-}
-
 review_view::HandImageText hand_image_text(const std::string& learner, const std::string& hand) {
   return {learner + "'s own hand",
           {"Quality-aware expertise took " + hand +

@@ -9,7 +9,6 @@
 #include "engine/review_view/review_images.hpp"
 #include "engine/review_view/review_picture.hpp"
 #include "teaching/review/before_after.hpp"
-#include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/review/expertise_rounds.hpp"
 #include "teaching/review/trial_review.hpp"
 #include "teaching/sessions/learner_hand_traces.hpp"
@@ -28,10 +27,6 @@ review_view::BeforeAfterPicture before_after_picture(const review::BeforeAfterGr
 std::vector<std::string> before_after_lines(const review::BeforeAfterGroup& group,
                                             const std::vector<review::TrialReview>& trials);
 review_view::HandOverlay hand_overlay(const LearnerHandTraces& traces);
-// The charged targets of `diagnosis` that say where they went wrong, each on its pre-test trial's track (`trials`:
-// the session's reviewed trials; a target whose trial is not among them is left out), in the diagnosis' order.
-std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExplanation& diagnosis,
-                                                      const std::vector<review::TrialReview>& trials);
 // `hand`: the reference's name ("the letters of Omniglot drawer 7").
 review_view::HandImageText hand_image_text(const std::string& learner, const std::string& hand);
 

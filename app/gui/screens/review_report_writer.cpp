@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "app/core/review_pictures.hpp"
+#include "app/gui/screens/learn_skill_picture.hpp"
 #include "engine/core/error.hpp"
 #include "engine/render/gl_context.hpp"
 #include "teaching/records/open_record_store.hpp"
@@ -18,6 +19,24 @@ namespace sc {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The charged targets that say where they went wrong, in the diagnosis' order, drawn from their trial documents as
+// the trainer's and the Review's pictures are (a parking path re-simulated at sub-steps).
+std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExplanation& diagnosis) {
+  std::vector<review_view::PlacePicture> out;
+  for (const review::SkillExplanation& skill : diagnosis.skills) {
+    if (!skill.place || skill.missed.empty()) continue;
+    const review::SkillPlace& place = *skill.place;
+    const auto largest = std::max_element(skill.missed.begin(), skill.missed.end(),
+                                          [](const auto& a, const auto& b) { return a.delta < b.delta; });
+    out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " +
+                       (largest->execution ? "done badly" : "missed") + " in pre-test trial " +
+                       std::to_string(place.seq),
+                   trial_part_picture_data(place.learner_trial, place.expert_trial, place.learner_begin,
+                                           place.learner_end, place.learner_steps)});
+  }
+  return out;
+}
 
 void write_file(const fs::path& file, const std::string& bytes) {
   std::ofstream out(file, std::ios::binary | std::ios::trunc);
@@ -106,15 +125,21 @@ class ReportWriter {
                                               hand_image_text(row.learner, report.diagnosis->learner_hand),
                                               request_.image_width, request_.image_height),
                prefix + "hand.png", "The learner's own hand");
-    if (report.diagnosis)
-      if (const auto places = place_pictures(*report.diagnosis, trials); !places.empty())
-        report.places_picture =
-            save(review_view::render_places_image(
-                     context(), places, row.learner + ": where the targets went wrong",
-                     {"Each charged target's largest penalty: the pre-test trial it happened in over the expert's "
-                      "trial of the same scenario, the part aligned with the expert's skill in orange."},
-                     request_.image_width, request_.image_height),
-                 prefix + "where.png", "Where the targets went wrong");
+    std::vector<review_view::PlacePicture> places;
+    try {
+      if (report.diagnosis) places = place_pictures(*report.diagnosis);
+    } catch (const InputError& e) {
+      result_.problems.push_back(where +
+                                 ", the picture of where the targets went wrong left out: " + one_line(e.what()));
+    }
+    if (!places.empty())
+      report.places_picture = save(
+          review_view::render_places_image(
+              context(), places, row.learner + ": where the targets went wrong",
+              {"Each charged target's largest penalty: the pre-test trial it happened in over the expert's trial of "
+               "the same scenario, the part aligned with the expert's skill in orange."},
+              request_.image_width, request_.image_height),
+          prefix + "where.png", "Where the targets went wrong");
     result_.trials += static_cast<int>(trials.size());
     return report;
   }
