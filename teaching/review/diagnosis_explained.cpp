@@ -39,18 +39,19 @@ TestTrial test_trial_of(const SessionReview& review, const records::StoredTrial&
 std::optional<SkillPlace> place_of(const SessionReview& review, const std::vector<TestTrial>& tests,
                                    const std::vector<const records::StoredTrial*>& pretest,
                                    const PlacedDiagnosis& placed, int skill) {
-  for (const TargetWhy& why : placed.expertise.why) {
-    if (why.skill != skill || why.reason == TargetReason::NoMistake) continue;
-    const auto t = static_cast<std::size_t>(why.trial);
-    const Json scenario = Json::parse(pretest.at(t)->record.scenario_json);
-    const auto& pool = review.kit().expert_pool();
-    const int index = tests.at(t).scenario;
-    return SkillPlace{
-        pretest[t]->seq, why.learner_begin,
-        why.learner_end, placed.learner_steps.at(t),
-        tests[t].trial,  index >= 0 ? pool.at(static_cast<std::size_t>(index)).trial : review.expert_for(scenario)};
-  }
-  return std::nullopt;
+  const TargetWhy* why = charged_why(placed, skill);
+  if (!why) return std::nullopt;
+  const auto t = static_cast<std::size_t>(why->trial);
+  const int index = tests.at(t).scenario;
+  const Json expert = index >= 0 ? review.kit().expert_pool().at(static_cast<std::size_t>(index)).trial
+                                 : review.expert_for(Json::parse(pretest.at(t)->record.scenario_json));
+  return SkillPlace{pretest.at(t)->seq,
+                    why->learner_begin,
+                    why->learner_end,
+                    placed.learner_steps.at(t),
+                    why->reason,
+                    tests[t].trial,
+                    expert};
 }
 
 }  // namespace

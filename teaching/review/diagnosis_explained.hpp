@@ -30,9 +30,10 @@ struct SkillPlace {
   int seq = 0;            // the pre-test trial
   int learner_begin = 0;  // the learner's steps aligned with the expert's segment [begin, end)
   int learner_end = 0;
-  int learner_steps = 0;  // the trial's step count
-  Json learner_trial;     // the learner's trial document
-  Json expert_trial;      // the expert's trial of the same scenario
+  int learner_steps = 0;                        // the trial's step count
+  TargetReason reason = TargetReason::Missing;  // missing, or done with a large error
+  Json learner_trial;                           // the learner's trial document
+  Json expert_trial;                            // the expert's trial of the same scenario
 };
 
 struct SkillExplanation {

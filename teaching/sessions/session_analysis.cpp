@@ -93,6 +93,14 @@ PlacedDiagnosis diagnosis_with_places(const TaskKit& kit, const std::vector<Test
   return out;
 }
 
+const TargetWhy* charged_why(const PlacedDiagnosis& placed, int skill) {
+  const auto& why = placed.expertise.why;
+  const auto it = std::find_if(why.begin(), why.end(), [skill](const TargetWhy& w) {
+    return w.skill == skill && w.reason != TargetReason::NoMistake;
+  });
+  return it == why.end() ? nullptr : &*it;
+}
+
 std::optional<SkillExample> example_of_skill(const std::vector<ExpertDemo>& pool, int skill) {
   std::optional<SkillExample> best;
   for (std::size_t i = 0; i < pool.size(); ++i)

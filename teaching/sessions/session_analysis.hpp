@@ -40,6 +40,8 @@ struct PlacedDiagnosis {
   std::vector<int> learner_steps;  // per trial
 };
 PlacedDiagnosis diagnosis_with_places(const TaskKit& kit, const std::vector<TestTrial>& trials);
+// `skill`'s largest penalty in `placed` (where it went wrong), or null when it has none (a target by rank alone).
+const TargetWhy* charged_why(const PlacedDiagnosis& placed, int skill);
 
 // An expert segment showing `skill` (the longest one in the pool; ties: lower pool index), for pictures.
 struct SkillExample {

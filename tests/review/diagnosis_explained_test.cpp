@@ -50,6 +50,7 @@ TEST(DiagnosisExplained, EachChargedTargetSaysWhereItsLargestPenaltyHappened) {
     const auto largest = std::max_element(s.missed.begin(), s.missed.end(),
                                           [](const auto& a, const auto& b) { return a.delta < b.delta; });
     EXPECT_EQ(s.place->seq, largest->seq);
+    EXPECT_EQ(s.place->reason == TargetReason::LargeError, largest->execution);
     EXPECT_GE(s.place->learner_begin, 0);
     EXPECT_LE(s.place->learner_begin, s.place->learner_end);
     EXPECT_LE(s.place->learner_end, s.place->learner_steps);

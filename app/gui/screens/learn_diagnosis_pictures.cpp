@@ -1,16 +1,6 @@
 #include "app/gui/screens/learn_diagnosis_pictures.hpp"
 
-#include <algorithm>
-
 namespace sc {
-
-const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill) {
-  const auto& why = placed.expertise.why;
-  const auto it = std::find_if(why.begin(), why.end(), [skill](const TargetWhy& w) {
-    return w.skill == skill && w.reason != TargetReason::NoMistake;
-  });
-  return it == why.end() ? nullptr : &*it;
-}
 
 std::string place_caption(int trial, const std::string& skill, TargetReason reason) {
   const std::string lead = "Your pre-test trial " + std::to_string(trial) + " in yellow, over the expert's in blue. ";
@@ -34,9 +24,8 @@ const DiagnosisRowPictures::Row& DiagnosisRowPictures::row(const TrainingSession
   if (const auto found = rows_.find(skill); found != rows_.end()) return found->second;
   Row r;
   const auto& pool = s.kit().expert_pool();
-  if (const auto example = example_of_skill(pool, skill))
-    r.example = skill_picture_data(pool[static_cast<std::size_t>(example->expert)], example->segment);
-  if (const TargetWhy* why = placed ? place_of(*placed, skill) : nullptr) {
+  r.example = skill_example_picture(pool, skill);
+  if (const TargetWhy* why = placed ? charged_why(*placed, skill) : nullptr) {
     const auto trial = static_cast<std::size_t>(why->trial);
     const ExpertDemo& expert = pool.at(static_cast<std::size_t>(s.pretest_pool_indices().at(trial)));
     r.place = trial_part_picture_data(s.pretest_trials().at(trial), expert.trial, why->learner_begin, why->learner_end,

@@ -43,7 +43,4 @@ class DiagnosisRowPictures {
 // What a "where" picture shows, by why the skill was charged there (pre-test trial `trial`, 1-based).
 std::string place_caption(int trial, const std::string& skill, TargetReason reason);
 
-// The skill's largest penalty in the pre-test, if it has one.
-const TargetWhy* place_of(const PlacedDiagnosis& placed, int skill);
-
 }  // namespace sc

@@ -114,7 +114,7 @@ class LearnDiagnosisScreen final : public Screen {
     const PlacedDiagnosis* placed = s.pretest_places();
     if (placed && placed->expertise.estimate.expertise != e.expertise) placed = nullptr;
     const bool places = placed && std::any_of(e.ranking.begin(), e.ranking.begin() + shown,
-                                              [placed](int m) { return place_of(*placed, m) != nullptr; });
+                                              [placed](int m) { return charged_why(*placed, m) != nullptr; });
     const char* hint = places ? "Left: the skill as the expert does it. Right: the pre-test trial it went wrong in, "
                                 "that part in orange. Point at a picture to see it larger."
                               : "Point at a picture to see it larger.";

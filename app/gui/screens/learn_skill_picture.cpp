@@ -48,10 +48,13 @@ std::pair<std::size_t, std::size_t> point_range(TaskKind task, int begin, int en
 
 }  // namespace
 
-SkillPictureData skill_picture_data(const ExpertDemo& demo, const SkillSegment& segment) {
+std::optional<SkillPictureData> skill_example_picture(const std::vector<ExpertDemo>& pool, int skill) {
+  const auto example = example_of_skill(pool, skill);
+  if (!example) return std::nullopt;
+  const ExpertDemo& demo = pool[static_cast<std::size_t>(example->expert)];
   SkillPictureData out{trial_points(demo.trial)};
-  std::tie(out.first, out.last) =
-      point_range(task_of(demo.trial), segment.begin, segment.end, demo.steps.length(), out.points.size());
+  std::tie(out.first, out.last) = point_range(task_of(demo.trial), example->segment.begin, example->segment.end,
+                                              demo.steps.length(), out.points.size());
   return out;
 }
 
@@ -84,11 +87,6 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const SkillPicture
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
 }
 
-void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const ExpertDemo& demo, const SkillSegment& segment,
-                        bool highlight) {
-  draw_skill_picture(d, o, size, skill_picture_data(demo, segment), highlight);
-}
-
 void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const TrialPartPictureData& picture,
                              const char* label) {
   review_view::draw_part_overlay(d, o, size, picture);
@@ -97,11 +95,6 @@ void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const TrialPa
   const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(font, 1e9f, 0.0f, label);
   d.AddRectFilled(o, ImVec2(o.x + text.x + 8.0f, o.y + text.y + 4.0f), IM_COL32(28, 33, 43, 220), 6.0f);
   d.AddText(ImGui::GetFont(), font, ImVec2(o.x + 4.0f, o.y + 2.0f), IM_COL32(200, 208, 220, 255), label);
-}
-
-void draw_trial_part_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial,
-                             int begin, int end, int steps, const char* label) {
-  draw_trial_part_picture(d, o, size, trial_part_picture_data(learner_trial, expert_trial, begin, end, steps), label);
 }
 
 void draw_overlay_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const Json& learner_trial, const Json& expert_trial) {

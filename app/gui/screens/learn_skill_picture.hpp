@@ -4,6 +4,7 @@
 // rest of the manoeuvre faint; writing — the pen path of the segment's share of the gold trajectory.
 #include <imgui.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,8 @@ struct SkillPictureData {
   std::vector<ImVec2> points;       // the expert's whole trial
   std::size_t first = 0, last = 0;  // the segment's points
 };
-SkillPictureData skill_picture_data(const ExpertDemo& demo, const SkillSegment& segment);
+// The skill's example from the pool (example_of_skill), or none when no expert trial shows it.
+std::optional<SkillPictureData> skill_example_picture(const std::vector<ExpertDemo>& pool, int skill);
 
 // Both whole trials, the part's points of the learner's.
 using TrialPartPictureData = review_view::PartOverlay;
@@ -28,15 +30,11 @@ TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Js
 
 void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const SkillPictureData& picture,
                         bool highlight);
-void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const ExpertDemo& demo,
-                        const SkillSegment& segment, bool highlight);
 
 // Where a diagnosis target went wrong: the learner's trial in yellow over the expert's path of the same scenario
 // (a faint band), the part in orange, `label` in the corner.
 void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const TrialPartPictureData& picture,
                              const char* label);
-void draw_trial_part_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const Json& learner_trial,
-                             const Json& expert_trial, int begin, int end, int steps, const char* label);
 
 // Before/after pictures: the expert's path of the same scenario as a wide faint band, the learner's path
 // over it in yellow, both fitted into the box together.

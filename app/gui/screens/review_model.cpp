@@ -5,7 +5,6 @@
 #include "teaching/records/data_dir.hpp"
 #include "teaching/records/open_record_store.hpp"
 #include "teaching/review/practice_rounds.hpp"
-#include "teaching/sessions/session_analysis.hpp"
 
 namespace sc {
 
@@ -146,11 +145,7 @@ const SkillPictureData* ReviewModel::skill_picture(int skill) {
   if (!session_) return nullptr;
   auto found = skill_pictures_.find(skill);
   if (found == skill_pictures_.end()) {
-    const auto& pool = session_->kit().expert_pool();
-    std::optional<SkillPictureData> picture;
-    if (const auto example = example_of_skill(pool, skill))
-      picture = skill_picture_data(pool[static_cast<std::size_t>(example->expert)], example->segment);
-    found = skill_pictures_.emplace(skill, std::move(picture)).first;
+    found = skill_pictures_.emplace(skill, skill_example_picture(session_->kit().expert_pool(), skill)).first;
   }
   return found->second ? &*found->second : nullptr;
 }

@@ -25,12 +25,10 @@ namespace fs = std::filesystem;
 std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExplanation& diagnosis) {
   std::vector<review_view::PlacePicture> out;
   for (const review::SkillExplanation& skill : diagnosis.skills) {
-    if (!skill.place || skill.missed.empty()) continue;
+    if (!skill.place) continue;
     const review::SkillPlace& place = *skill.place;
-    const auto largest = std::max_element(skill.missed.begin(), skill.missed.end(),
-                                          [](const auto& a, const auto& b) { return a.delta < b.delta; });
     out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " +
-                       (largest->execution ? "done badly" : "missed") + " in pre-test trial " +
+                       (place.reason == TargetReason::Missing ? "missed" : "done badly") + " in pre-test trial " +
                        std::to_string(place.seq),
                    trial_part_picture_data(place.learner_trial, place.expert_trial, place.learner_begin,
                                            place.learner_end, place.learner_steps)});
