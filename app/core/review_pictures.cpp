@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <set>
 
+#include "engine/core/error.hpp"
+
 namespace sc {
 namespace {
 
@@ -40,8 +42,23 @@ review_view::ReviewPath review_path(const review::TrialTrack& track, const std::
   return path;
 }
 
-review_view::TrialPicture trial_picture(const review::TrialReview& trial) {
+review_view::SkillPalette session_palette(const review::ExpertiseRounds& rounds) {
+  std::vector<int> skills;
+  for (const auto& s : rounds.skills) skills.push_back(s.skill);
+  return review_view::SkillPalette(std::move(skills));
+}
+
+review_view::SkillPalette session_palette(const TaskKit& kit, const review::SessionRecord& record) {
+  try {
+    return session_palette(review::expertise_rounds(kit, record));
+  } catch (const InputError&) {
+    return {};  // the expertise chart says what is wrong with the diagnoses
+  }
+}
+
+review_view::TrialPicture trial_picture(const review::TrialReview& trial, const review_view::SkillPalette& palette) {
   review_view::TrialPicture picture;
+  picture.palette = palette;
   picture.task = trial.task;
   picture.scenario = trial.learner.at("scenario");
   picture.learner = review_path(trial.learner_track, trial.learner_skills);
@@ -75,8 +92,10 @@ review_view::TrialImageText trial_image_text(const std::string& learner, const r
   return text;
 }
 
-review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds) {
+review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds,
+                                            const review_view::SkillPalette& palette) {
   review_view::ExpertiseChart chart;
+  chart.palette = palette;
   for (int r : rounds.rounds) chart.rounds.push_back("round " + std::to_string(r));
   for (const auto& s : rounds.skills) chart.skills.push_back({s.skill, s.description, s.expertise, s.drilled});
   chart.lowest = rounds.lowest;

@@ -16,11 +16,16 @@
 namespace sc {
 
 review_view::ReviewPath review_path(const review::TrialTrack& track, const std::vector<review::SkillSpan>& spans);
-review_view::TrialPicture trial_picture(const review::TrialReview& trial);
+// The colours of one session's pictures: the skills its diagnoses weigh (the expertise chart's) take the hues in
+// turn; a session whose diagnoses cannot be read gets the palette by skill id.
+review_view::SkillPalette session_palette(const review::ExpertiseRounds& rounds);
+review_view::SkillPalette session_palette(const TaskKit& kit, const review::SessionRecord& record);
+review_view::TrialPicture trial_picture(const review::TrialReview& trial, const review_view::SkillPalette& palette);
 // Title, outcome lines, the legend of every skill in the picture (learner's, expert's and ghost's) and the plot.
 review_view::TrialImageText trial_image_text(const std::string& learner, const review::TrialReview& trial);
 review_view::RewardPlot reward_plot(const review::TrialReview& trial);
-review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds);
+review_view::ExpertiseChart expertise_chart(const review::ExpertiseRounds& rounds,
+                                            const review_view::SkillPalette& palette);
 // The group's trials (already reviewed: `trials` indexed by seq lookup) as one overlay.
 review_view::BeforeAfterPicture before_after_picture(const review::BeforeAfterGroup& group,
                                                      const std::vector<review::TrialReview>& trials);

@@ -83,7 +83,8 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
   y += fs * 1.6f;
   const double full = chart.lowest < 0.0 ? -chart.lowest : 1.0;
   for (const ChartSkill& s : chart.skills) {
-    dl.AddRectFilled({left, y + fs * 0.15f}, {left + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(s.skill), 3.0f);
+    dl.AddRectFilled({left, y + fs * 0.15f}, {left + fs * 0.8f, y + fs * 0.95f}, chart.palette.color_u32(s.skill),
+                     3.0f);
     dl.AddText(title_font(bold), fs, {left + fs * 1.1f, y}, kText, skill_title(s).c_str(), nullptr, wrap);
     y += title_height(bold, wrap, s) + 6.0f * scale;
     dl.AddLine({left, y - 2.0f * scale}, {left, y + bar * static_cast<float>(s.values.size())}, kGrid, 1.0f);
@@ -93,7 +94,7 @@ void draw_expertise_chart(ImDrawList& dl, ImVec2 p, ImVec2 size, const Expertise
       if (s.values[r]) {
         const float length = static_cast<float>(-*s.values[r] / full) * (right - left);
         const float end = left + std::max(length, 2.0f * scale);
-        dl.AddRectFilled({left, top}, {end, bottom}, skill_color_u32(s.skill, a), 2.0f);
+        dl.AddRectFilled({left, top}, {end, bottom}, chart.palette.color_u32(s.skill, a), 2.0f);
         if (r < s.drilled.size() && s.drilled[r])
           dl.AddRect({left - 1.0f, top - 1.0f}, {end + 1.0f, bottom + 1.0f}, IM_COL32(255, 255, 255, 255), 2.0f, 0,
                      2.0f * scale);

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/review_view/review_palette.hpp"
+
 namespace sc::review_view {
 
 struct ChartSkill {
@@ -21,7 +23,8 @@ struct ChartSkill {
 struct ExpertiseChart {
   std::vector<std::string> rounds;  // "round 1", ...
   std::vector<ChartSkill> skills;
-  double lowest = 0.0;  // the most negative value (the bars' full length)
+  double lowest = 0.0;   // the most negative value (the bars' full length)
+  SkillPalette palette;  // the session's skill colours
 };
 
 struct RewardPlot {

@@ -83,7 +83,8 @@ RgbaImage render_trial_image(GlContext& context, const TrialPicture& picture, co
         }
         y += 6.0f * s;
         for (const LegendEntry& e : text.legend) {
-          dl.AddRectFilled({x, y + fs * 0.15f}, {x + fs * 0.8f, y + fs * 0.95f}, skill_color_u32(e.skill), 3.0f);
+          dl.AddRectFilled({x, y + fs * 0.15f}, {x + fs * 0.8f, y + fs * 0.95f}, picture.palette.color_u32(e.skill),
+                           3.0f);
           const std::string label = std::to_string(e.skill) + "  " + e.label;
           dl.AddText(nullptr, 0.0f, {x + fs * 1.2f, y}, kCaptionText, label.c_str(), nullptr, wrap - fs * 1.2f);
           y += ImGui::CalcTextSize(label.c_str(), nullptr, false, wrap - fs * 1.2f).y + 4.0f * s;

@@ -1,6 +1,8 @@
 #include "engine/review_view/review_palette.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 
 namespace sc::review_view {
 namespace {
@@ -18,13 +20,20 @@ constexpr std::array<std::uint32_t, 8> kSkillColors = {
 
 }  // namespace
 
-Color skill_color(int skill, float alpha) {
-  const std::size_t i = static_cast<std::size_t>(skill < 0 ? -skill : skill) % kSkillColors.size();
-  return Color::hex(kSkillColors[i], alpha);
+SkillPalette::SkillPalette(std::vector<int> skills) : skills_(std::move(skills)) {
+  std::sort(skills_.begin(), skills_.end());
+  skills_.erase(std::unique(skills_.begin(), skills_.end()), skills_.end());
 }
 
-ImU32 to_u32(Color color) { return color.packed_abgr(); }
+Color SkillPalette::color(int skill, float alpha) const {
+  const auto at = std::lower_bound(skills_.begin(), skills_.end(), skill);
+  const bool listed = at != skills_.end() && *at == skill;
+  const long slot = listed ? at - skills_.begin() : static_cast<long>(skills_.size()) + std::abs(skill);
+  return Color::hex(kSkillColors[static_cast<std::size_t>(slot) % kSkillColors.size()], alpha);
+}
 
-ImU32 skill_color_u32(int skill, float alpha) { return to_u32(skill_color(skill, alpha)); }
+ImU32 SkillPalette::color_u32(int skill, float alpha) const { return to_u32(color(skill, alpha)); }
+
+ImU32 to_u32(Color color) { return color.packed_abgr(); }
 
 }  // namespace sc::review_view

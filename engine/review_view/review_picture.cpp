@@ -102,7 +102,8 @@ std::span<const Vec2f> span_points(const ReviewPath& path, const PathSpan& span)
 }
 
 // The path in skill colours over a dark casing, with a bead at every boundary between two skills.
-void paint_skill_path(Renderer2D& renderer, const ReviewPath& path, float width, float alpha) {
+void paint_skill_path(Renderer2D& renderer, const ReviewPath& path, const SkillPalette& palette, float width,
+                      float alpha) {
   if (path.points.size() < 2) return;
   const PathStyle style = round_style();
   renderer.polyline(path.points, Stroke::pixels(width + 3.0f), Color::hex(0x101418, 0.7f * alpha), style);
@@ -111,7 +112,7 @@ void paint_skill_path(Renderer2D& renderer, const ReviewPath& path, float width,
     return;
   }
   for (const PathSpan& span : path.spans)
-    renderer.polyline(span_points(path, span), Stroke::pixels(width), skill_color(span.skill, alpha), style);
+    renderer.polyline(span_points(path, span), Stroke::pixels(width), palette.color(span.skill, alpha), style);
   const float bead = width * 1.3f / renderer.camera().pixels_per_unit();
   for (std::size_t i = 1; i < path.spans.size(); ++i) {
     const int at = std::clamp(path.spans[i].begin, 0, static_cast<int>(path.points.size()) - 1);
@@ -121,10 +122,10 @@ void paint_skill_path(Renderer2D& renderer, const ReviewPath& path, float width,
   }
 }
 
-void paint_expert(Renderer2D& renderer, TaskKind task, const ReviewPath& expert) {
+void paint_expert(Renderer2D& renderer, TaskKind task, const ReviewPath& expert, const SkillPalette& palette) {
   if (expert.points.size() < 2) return;
   renderer.ghost_ribbon(expert.points, Stroke::world(look_of(task).expert_ribbon), kExpertRibbon, round_style());
-  paint_skill_path(renderer, expert, 2.0f, 0.75f);
+  paint_skill_path(renderer, expert, palette, 2.0f, 0.75f);
 }
 
 void paint_ghost(Renderer2D& renderer, TaskKind task, const ReviewPath& ghost) {
@@ -193,9 +194,9 @@ Camera2D before_after_camera(const BeforeAfterPicture& picture, PixelViewport vi
 
 void paint_trial_picture(Renderer2D& renderer, const TrialPicture& picture) {
   paint_background(renderer, picture.task, {picture.scenario});
-  if (picture.expert) paint_expert(renderer, picture.task, *picture.expert);
+  if (picture.expert) paint_expert(renderer, picture.task, *picture.expert, picture.palette);
   if (picture.ghost) paint_ghost(renderer, picture.task, *picture.ghost);
-  paint_skill_path(renderer, picture.learner, 5.0f, 1.0f);
+  paint_skill_path(renderer, picture.learner, picture.palette, 5.0f, 1.0f);
   paint_marker(renderer, picture.task, picture.learner,
                picture.playhead.value_or(static_cast<double>(picture.learner.points.size()) - 1.0));
 }

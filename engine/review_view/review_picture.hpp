@@ -11,6 +11,7 @@
 #include "engine/core/task_kind.hpp"
 #include "engine/render/camera2d.hpp"
 #include "engine/render/renderer2d.hpp"
+#include "engine/review_view/review_palette.hpp"
 
 namespace sc::review_view {
 
@@ -33,6 +34,7 @@ struct TrialPicture {
   std::optional<ReviewPath> expert;  // wide translucent ribbon under everything, thin skill-coloured core
   std::optional<ReviewPath> ghost;   // the drill the learner practised: dashed white
   std::optional<double> playhead;    // step position (fractional) of the car/pen to draw; none: the end
+  SkillPalette palette;              // the session's skill colours (the legend's too)
 };
 
 struct BeforeAfterPicture {

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,16 +45,18 @@ TEST_F(ReviewPictures, TrialViewerMatchesGolden) {
   // The cut-short second pre-test trial would show little; the first shows a whole attempt.
   const int seq = review_->record().trials_of(records::TrialKind::Pretest).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image =
-      review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial), kWidth, kHeight);
+  const RgbaImage image = review_view::render_trial_image(
+      *context_, trial_picture(trial, session_palette(review_->kit(), review_->record())),
+      trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer"));
 }
 
 TEST_F(ReviewPictures, PracticeTrialWithGhostMatchesGolden) {
   const int seq = review_->record().trials_of(records::TrialKind::Practice).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image =
-      review_view::render_trial_image(*context_, trial_picture(trial), trial_image_text("Ada", trial), kWidth, kHeight);
+  const RgbaImage image = review_view::render_trial_image(
+      *context_, trial_picture(trial, session_palette(review_->kit(), review_->record())),
+      trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer_practice"));
 }
 
@@ -74,10 +77,23 @@ TEST_F(ReviewPictures, BeforeAfterMatchesGolden) {
   EXPECT_TRUE(test::matches_golden(image, "review/before_after"));
 }
 
+// The session's skills take the palette's hues in turn: no two of its chart's skills share a colour (by skill id
+// alone, skills 6 and 14 of this session were both yellow).
+TEST_F(ReviewPictures, NoTwoSkillsOfTheSessionShareAColour) {
+  const review::ExpertiseRounds rounds = review::expertise_rounds(review_->kit(), review_->record());
+  const review_view::ExpertiseChart chart = expertise_chart(rounds, session_palette(review_->kit(), review_->record()));
+  ASSERT_GE(chart.skills.size(), 2u);
+  ASSERT_LE(chart.skills.size(), 8u);
+  std::set<ImU32> colours;
+  for (const auto& s : chart.skills) colours.insert(chart.palette.color_u32(s.skill));
+  EXPECT_EQ(colours.size(), chart.skills.size());
+}
+
 TEST_F(ReviewPictures, ExpertiseChartMatchesGolden) {
   const review::ExpertiseRounds rounds = review::expertise_rounds(review_->kit(), review_->record());
-  const RgbaImage image = review_view::render_expertise_chart_image(*context_, expertise_chart(rounds),
-                                                                    "Expertise per skill across rounds", kWidth);
+  const RgbaImage image = review_view::render_expertise_chart_image(
+      *context_, expertise_chart(rounds, session_palette(review_->kit(), review_->record())),
+      "Expertise per skill across rounds", kWidth);
   EXPECT_TRUE(test::matches_golden(image, "review/expertise_chart"));
 }
 
@@ -94,7 +110,7 @@ TEST_F(ReviewPictures, AChartOfManySkillsAndRoundsKeepsEverySkillInItsImage) {
   EXPECT_GT(image.height, 2 * kHeight);
   // The last skill's bars are drawn in its colour (its last round the brightest, opaque): find them in the
   // bottom tenth of the image, and nothing but the background in its last rows.
-  const ImU32 last = review_view::skill_color_u32(15);
+  const ImU32 last = chart.palette.color_u32(15);
   const auto channel = [](ImU32 c, int shift) { return static_cast<int>((c >> shift) & 0xFF); };
   int found = 0;
   for (int y = image.height * 9 / 10; y < image.height; ++y)

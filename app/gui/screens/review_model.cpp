@@ -54,6 +54,7 @@ void ReviewModel::select_session(std::int64_t id) {
   try {
     review::SessionRecord record = review::load_session_record(*store_, id);
     session_ = std::make_unique<review::SessionReview>(kits_.kit_of(record.session), std::move(record));
+    palette_ = session_palette(session_->kit(), session_->record());
     trial_.reset();
     groups_.reset();
     test_trials_.reset();
@@ -75,7 +76,7 @@ void ReviewModel::select_trial(int seq) {
   if (!session_) return;
   try {
     trial_ = session_->trial(seq);
-    picture_ = trial_picture(*trial_);
+    picture_ = trial_picture(*trial_, palette_);
     playback_.load(trial_->learner_track.steps(), trial_->learner_track.step_seconds);
   } catch (const InputError& e) {
     message = e.what();
@@ -120,7 +121,7 @@ std::vector<std::string> ReviewModel::before_after_lines(std::size_t group) {
 const review_view::ExpertiseChart* ReviewModel::expertise_chart() {
   if (!chart_ && session_) {
     try {
-      chart_ = sc::expertise_chart(review::expertise_rounds(session_->kit(), session_->record()));
+      chart_ = sc::expertise_chart(review::expertise_rounds(session_->kit(), session_->record()), palette_);
     } catch (const InputError& e) {
       message = e.what();
       chart_.emplace();

@@ -47,6 +47,8 @@ class ReviewModel {
   void select_trial(int seq);
   const review::TrialReview* trial() const { return trial_ ? &*trial_ : nullptr; }
   review_view::TrialPicture& picture() { return picture_; }
+  // The selected session's skill colours (session_palette), for every picture and swatch of the Review.
+  const review_view::SkillPalette& palette() const { return palette_; }
   review::Playback& playback() { return playback_; }
 
   // Of the selected session, computed on first use.
@@ -74,6 +76,7 @@ class ReviewModel {
   std::unique_ptr<review::SessionReview> session_;
   std::optional<review::TrialReview> trial_;
   review_view::TrialPicture picture_;
+  review_view::SkillPalette palette_;
   review::Playback playback_;
   std::optional<std::vector<review::BeforeAfterGroup>> groups_;
   std::optional<std::vector<review::TrialReview>> test_trials_;

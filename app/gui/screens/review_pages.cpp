@@ -293,7 +293,7 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       const ImVec2 at = ImGui::GetCursorScreenPos();
       const float fs = ImGui::GetFontSize();
       ImGui::GetWindowDrawList()->AddRectFilled({at.x, at.y + fs * 0.15f}, {at.x + fs * 0.8f, at.y + fs * 0.95f},
-                                                review_view::skill_color_u32(skill.skill), 3.0f);
+                                                model.palette().color_u32(skill.skill), 3.0f);
       ImGui::Dummy({fs, fs});
       ImGui::SameLine();
       ImGui::PushFont(ui.fonts.bold);

@@ -81,10 +81,11 @@ class ReportWriter {
       }
     }
     const std::string prefix = "session" + std::to_string(row.session_id) + "_";
+    const review_view::SkillPalette palette = session_palette(review.kit(), review.record());
     for (const auto& t : trials) {
       report.trials.push_back({row.session_id, t});
       report.trial_images.push_back(
-          save(review_view::render_trial_image(context(), trial_picture(t), trial_image_text(row.learner, t),
+          save(review_view::render_trial_image(context(), trial_picture(t, palette), trial_image_text(row.learner, t),
                                                request_.image_width, request_.image_height),
                prefix + "trial" + std::to_string(t.stored.seq) + ".png", t.label));
     }
@@ -109,7 +110,7 @@ class ReportWriter {
     }
     if (rounds && !rounds->rounds.empty())
       report.expertise_chart =
-          save(review_view::render_expertise_chart_image(context(), expertise_chart(*rounds),
+          save(review_view::render_expertise_chart_image(context(), expertise_chart(*rounds, palette),
                                                          "Expertise per skill across rounds", request_.image_width),
                prefix + "expertise.png", "Expertise per skill across rounds");
     try {

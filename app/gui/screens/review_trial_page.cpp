@@ -97,7 +97,7 @@ void draw_side_panel(UiContext& ui, ReviewModel& model, float x, float y, float 
       ImGui::SetCursorScreenPos(at);
     }
     dl.AddRectFilled({at.x + thumb.x + 8 * s, at.y + 4 * s}, {at.x + thumb.x + 22 * s, at.y + 18 * s},
-                     review_view::skill_color_u32(skill), 3.0f);
+                     model.palette().color_u32(skill), 3.0f);
     ImGui::SetCursorScreenPos({at.x + thumb.x + 28 * s, at.y});
     ImGui::PushTextWrapPos(0.0f);
     ImGui::Text("%d  %s", skill, words.c_str());
