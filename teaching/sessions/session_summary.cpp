@@ -1,8 +1,31 @@
 #include "teaching/sessions/session_summary.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sc {
+
+SkillTrend skill_trend(const SkillChange& change) {
+  const auto shown = [](double e) { return std::lround(e * 100.0); };  // in hundredths, as printed
+  const long before = shown(change.before), after = shown(change.after);
+  if (before == 0 && after == 0) return SkillTrend::no_mistake;
+  if (after == before) return SkillTrend::same;
+  return after > before ? SkillTrend::better : SkillTrend::worse;
+}
+
+const char* to_string(SkillTrend trend) {
+  switch (trend) {
+    case SkillTrend::no_mistake:
+      return "no mistake";
+    case SkillTrend::better:
+      return "better";
+    case SkillTrend::same:
+      return "same";
+    case SkillTrend::worse:
+      return "worse";
+  }
+  return "?";
+}
 
 double mean_of(const std::vector<double>& values) {
   if (values.empty()) return 0.0;

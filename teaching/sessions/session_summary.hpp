@@ -28,6 +28,12 @@ struct RoundSummary {
   std::vector<SkillChange> skills;  // every skill the kit knows, by id
 };
 
+// How a skill changed, as the summary shows it (E_m to two decimals): a learner reads "-0.20 -> -0.20" as the
+// same, and "0.00 -> 0.00" as no mistake at all, not as an improvement.
+enum class SkillTrend { no_mistake, better, same, worse };
+SkillTrend skill_trend(const SkillChange& change);
+const char* to_string(SkillTrend trend);  // "no mistake", "better", "same", "worse"
+
 double mean_of(const std::vector<double>& values);  // 0 for an empty list
 
 RoundSummary summarize_round(int round, const std::vector<double>& pretest_rewards,

@@ -18,6 +18,15 @@
 namespace sc {
 namespace {
 
+// The change's word in a colour that says whether it is good news: green better, red worse, grey otherwise.
+void draw_change_word(const SkillChange& change) {
+  const SkillTrend trend = skill_trend(change);
+  const ImVec4 colour = trend == SkillTrend::better  ? ImVec4(0.5f, 0.9f, 0.5f, 1)
+                        : trend == SkillTrend::worse ? ImVec4(1.0f, 0.6f, 0.5f, 1)
+                                                     : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+  ImGui::TextColored(colour, "%s", to_string(trend));
+}
+
 class LearnSummaryScreen final : public Screen {
  public:
   explicit LearnSummaryScreen(AppServices& services)
@@ -59,6 +68,11 @@ class LearnSummaryScreen final : public Screen {
         row * std::max(3.0f, std::floor((static_cast<float>(ui.height) - ImGui::GetCursorPosY() - 160 * sc) / row));
     const ImGuiTableFlags scroll = rows_height > room ? ImGuiTableFlags_ScrollY : 0;
     if (ImGui::BeginTable("skills", 3, ImGuiTableFlags_SizingStretchProp | scroll, ImVec2(0, scroll ? room : 0))) {
+      // The figures and the word keep their whole width beside a scrollbar; the skill's words take the rest.
+      const float gap = 12 * sc;
+      ImGui::TableSetupColumn("skill", ImGuiTableColumnFlags_WidthStretch);
+      ImGui::TableSetupColumn("E", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("-0.00 -> -0.00").x + gap);
+      ImGui::TableSetupColumn("trend", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("no mistake").x + gap);
       for (const SkillChange& c : summary_->skills) {
         if (!c.seen && !c.drilled) continue;
         ImGui::TableNextRow();
@@ -71,10 +85,7 @@ class LearnSummaryScreen final : public Screen {
         ImGui::TableNextColumn();
         ImGui::Text("%.2f -> %.2f", c.before, c.after);
         ImGui::TableNextColumn();
-        ImGui::TextColored(c.after >= c.before ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1.0f, 0.6f, 0.5f, 1), "%s",
-                           c.after > c.before    ? "better"
-                           : c.after == c.before ? "same"
-                                                 : "worse");
+        draw_change_word(c);
       }
       ImGui::EndTable();
     }
