@@ -16,11 +16,6 @@ std::vector<ImVec2> fit_into_box(const std::vector<ImVec2>& points, ImVec2 o, Im
   return out;
 }
 
-namespace {
-
-// Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel,
-// which shrinks to a fraction of a pixel in a thumbnail; a thick polyline through such zigzags draws a
-// miter spike at every one of them (the expert's word looked hairy).
 std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
   std::vector<ImVec2> out;
   for (const ImVec2& p : points) {
@@ -34,8 +29,6 @@ std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing) {
     out.push_back(points.back());
   return out;
 }
-
-}  // namespace
 
 // The pieces' ends overlap where the path is split.
 void draw_thick_path(ImDrawList& d, const std::vector<ImVec2>& points, ImU32 color, float thickness) {
@@ -90,7 +83,7 @@ void draw_part_overlay(ImDrawList& d, ImVec2 o, ImVec2 size, const PartOverlay& 
   if (overlay.last <= overlay.first || overlay.last >= overlay.learner.size()) return;
   const std::vector<ImVec2> part(overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.first),
                                  overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.last) + 1);
-  draw_thick_path(d, fit_into_box(part, o, size, bounds), kOverlayPart, 4.0f);
+  draw_thick_path(d, thinned(fit_into_box(part, o, size, bounds), 1.5f), kOverlayPart, 4.0f);
 }
 
 }  // namespace sc::review_view

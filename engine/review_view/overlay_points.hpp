@@ -24,6 +24,11 @@ struct OverlayBounds {
 std::vector<ImVec2> fit_into_box(const std::vector<ImVec2>& points, ImVec2 top_left, ImVec2 size,
                                  const OverlayBounds& bounds);
 
+// Points at least `spacing` pixels apart (first and last kept). A writing trace has a point per pen pixel, which
+// shrinks to a fraction of a pixel in a thumbnail: a thick polyline through such zigzags draws a miter spike at
+// every one of them (the expert's word looked hairy), and thousands of segments per picture cost frame time.
+std::vector<ImVec2> thinned(const std::vector<ImVec2>& points, float spacing);
+
 // A thick polyline (box coordinates), split where it turns back sharply: ImGui joins segments with unlimited
 // miters, which at a pen reversing its direction draw a long spike.
 void draw_thick_path(ImDrawList& draw_list, const std::vector<ImVec2>& points, ImU32 color, float thickness);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -42,6 +43,22 @@ class OverlayPoints : public ::testing::Test {
   ImGuiContext* context_ = nullptr;
   ImDrawList* list_ = nullptr;
 };
+
+TEST(Thinned, KeepsBothEndsAndNoTwoPointsCloserThanTheSpacing) {
+  std::vector<ImVec2> dense;  // a pen trace with a point every 0.2 px, shrunk into a thumbnail
+  for (int i = 0; i <= 500; ++i) dense.emplace_back(0.2f * i, 0.1f * (i % 7));
+  const std::vector<ImVec2> thin = thinned(dense, 1.5f);
+  ASSERT_GE(thin.size(), 2u);
+  EXPECT_LT(thin.size(), dense.size() / 5);
+  EXPECT_EQ(thin.front().x, dense.front().x);
+  EXPECT_EQ(thin.back().x, dense.back().x);
+  for (std::size_t i = 1; i + 1 < thin.size(); ++i)
+    EXPECT_GE(std::hypot(thin[i].x - thin[i - 1].x, thin[i].y - thin[i - 1].y), 1.5f) << i;
+  const std::vector<ImVec2> short_path = thinned({{3, 4}, {3.5f, 4}}, 1.5f);  // shorter than the spacing
+  ASSERT_EQ(short_path.size(), 2u);
+  EXPECT_EQ(short_path.back().x, 3.5f);
+  EXPECT_TRUE(thinned({}, 1.5f).empty());
+}
 
 TEST_F(OverlayPoints, BoundsHoldEveryPointOfEverySet) {
   OverlayBounds b;

@@ -80,10 +80,13 @@ void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const SkillPicture
   for (const ImVec2& p : line.points)
     mapped.emplace_back(o.x + size.x * 0.5f + (p.x - (lo.x + hi.x) * 0.5f) * scale,
                         o.y + size.y * 0.5f + (p.y - (lo.y + hi.y) * 0.5f) * scale);
-  d.AddPolyline(mapped.data(), static_cast<int>(mapped.size()), IM_COL32(120, 130, 150, 90), ImDrawFlags_None, 2.0f);
-  const int n = static_cast<int>(line.last - line.first + 1);
+  review_view::draw_thick_path(d, review_view::thinned(mapped, 1.5f), IM_COL32(120, 130, 150, 90), 2.0f);
   const ImU32 color = highlight ? IM_COL32(255, 160, 90, 255) : IM_COL32(91, 155, 255, 255);
-  if (n >= 2) d.AddPolyline(mapped.data() + line.first, n, color, ImDrawFlags_None, 3.5f);
+  if (line.last > line.first) {
+    const std::vector<ImVec2> part(mapped.begin() + static_cast<std::ptrdiff_t>(line.first),
+                                   mapped.begin() + static_cast<std::ptrdiff_t>(line.last) + 1);
+    review_view::draw_thick_path(d, review_view::thinned(part, 1.5f), color, 3.5f);
+  }
   d.AddCircleFilled(mapped[line.last], 4.0f, color);
 }
 
