@@ -9,6 +9,7 @@
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/students/bc_datasets.hpp"
+#include "teaching/students/experiment_seeds.hpp"
 #include "teaching/students/finetune_data.hpp"
 #include "teaching/students/writing_pen_policy.hpp"
 #include "teaching/tasks/expert_demos.hpp"
@@ -17,18 +18,7 @@
 namespace sc {
 namespace {
 
-// Independent, reorder-stable seeds for each use (streams of Rng::fork).
-enum SeedStream : std::uint64_t {
-  kStudentInit = 1,
-  kEvaluationSet = 2,
-  kFinetuneData = 3,
-  kFinetuneTraining = 4,
-  kRehearsal = 5
-};
-
-std::uint64_t derived_seed(std::uint64_t seed, SeedStream stream, std::uint64_t a = 0, std::uint64_t b = 0) {
-  return Rng(seed).fork(stream).fork(a).fork(b).next_u64();
-}
+using namespace experiment_seeds;  // NOLINT: the streams and derived_seed, shared with the other task
 
 void report(const ExperimentProgress& progress, const std::string& phase, int done, int total) {
   if (progress) progress(phase, done, total);
