@@ -217,7 +217,8 @@ CommandRunner setup_simulate_students(CLI::App& sub) {
 }
 
 const CommandRegistration kSimulateStudentsCommandRegistration{
-    {"simulate-students", "Synthetic parking students fine-tuned on Ind. Drills vs Drills vs Full Trajectory",
+    {"simulate-students",
+     "Synthetic students (parking or writing) fine-tuned on Ind. Drills vs Drills vs Full Trajectory",
      "skillcoach simulate-students --seed 0 --out-dir docs", setup_simulate_students}};
 
 }  // namespace
