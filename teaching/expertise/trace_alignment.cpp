@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace sc {
 namespace {
@@ -13,33 +12,49 @@ double distance(const TracePoint3& a, const TracePoint3& b) {
 
 }  // namespace
 
+// The accumulated costs are kept for two rows only, and each cell's predecessor as one byte: the same choice the
+// spec's backtracking makes from the finished costs (they are final when the cell is computed), at an eighth of
+// the memory a full cost matrix took (a writing pre-test aligns ~1000 x 1000 points per reference and word).
 StepAlignment align_traces(const std::vector<TracePoint3>& expert, const std::vector<TracePoint3>& learner) {
   const std::size_t n = expert.size(), m = learner.size();
   if (n == 0 || m == 0) return {};
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<double> cost(n * m, kInf);
-  auto at = [&](std::size_t i, std::size_t j) -> double& { return cost[i * m + j]; };
+  enum Step : unsigned char { kDiagonal, kExpert, kLearner };  // (i-1, j-1), (i-1, j), (i, j-1)
+  std::vector<unsigned char> from(n * m);
+  std::vector<double> previous(m), current(m);
   for (std::size_t i = 0; i < n; ++i) {
+    unsigned char* row_from = from.data() + i * m;
     for (std::size_t j = 0; j < m; ++j) {
-      double best = i == 0 && j == 0 ? 0.0 : kInf;
-      if (i > 0 && j > 0) best = std::min(best, at(i - 1, j - 1));
-      if (i > 0) best = std::min(best, at(i - 1, j));
-      if (j > 0) best = std::min(best, at(i, j - 1));
-      at(i, j) = best + distance(expert[i], learner[j]);
+      double best = 0.0;
+      if (i == 0 && j > 0) {
+        best = current[j - 1];
+        row_from[j] = kLearner;
+      } else if (i > 0 && j == 0) {
+        best = previous[0];
+        row_from[j] = kExpert;
+      } else if (i > 0) {
+        const double diagonal = previous[j - 1], up = previous[j], left = current[j - 1];
+        if (diagonal <= up && diagonal <= left) {
+          best = diagonal;
+          row_from[j] = kDiagonal;
+        } else if (up <= left) {
+          best = up;
+          row_from[j] = kExpert;
+        } else {
+          best = left;
+          row_from[j] = kLearner;
+        }
+      }
+      current[j] = best + distance(expert[i], learner[j]);
     }
+    std::swap(previous, current);
   }
   StepAlignment path;
   std::size_t i = n - 1, j = m - 1;
   path.push_back({static_cast<int>(i), static_cast<int>(j)});
   while (i > 0 || j > 0) {
-    if (i > 0 && j > 0 && at(i - 1, j - 1) <= at(i - 1, j) && at(i - 1, j - 1) <= at(i, j - 1)) {
-      --i;
-      --j;
-    } else if (i > 0 && (j == 0 || at(i - 1, j) <= at(i, j - 1))) {
-      --i;
-    } else {
-      --j;
-    }
+    const unsigned char step = from[i * m + j];
+    if (step != kLearner) --i;
+    if (step != kExpert) --j;
     path.push_back({static_cast<int>(i), static_cast<int>(j)});
   }
   std::reverse(path.begin(), path.end());

@@ -4,7 +4,8 @@
 // later the learner was (quality-aware expertise, execution_expertise.hpp).
 //
 // Spec: classic DTW, steps (i-1, j), (i, j-1), (i-1, j-1), local cost the Euclidean distance of the points,
-// path from (0, 0) to (n-1, m-1). Ties prefer the diagonal, then the expert's step. O(n m) time and memory.
+// path from (0, 0) to (n-1, m-1). Ties prefer the diagonal, then the expert's step. O(n m) time; n m bytes and
+// two rows of costs of memory.
 #include <array>
 #include <utility>
 #include <vector>

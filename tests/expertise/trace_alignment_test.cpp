@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "engine/core/rng.hpp"
+
 namespace sc {
 namespace {
 
@@ -28,6 +34,50 @@ TEST(TraceAlignment, ASlowerLearnerSpendsTwoStepsOnEachExpertStep) {
   for (std::size_t k = 1; k < path.size(); ++k) {
     EXPECT_GE(path[k].first, path[k - 1].first);
     EXPECT_GE(path[k].second, path[k - 1].second);
+  }
+}
+
+double distance(const TracePoint3& a, const TracePoint3& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The spec read literally: the whole cost matrix, then the backtracking from its finished values.
+StepAlignment spec_alignment(const std::vector<TracePoint3>& e, const std::vector<TracePoint3>& l) {
+  const std::size_t n = e.size(), m = l.size();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> c(n * m, inf);
+  const auto at = [&](std::size_t i, std::size_t j) -> double& { return c[i * m + j]; };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < m; ++j) {
+      double best = i == 0 && j == 0 ? 0.0 : inf;
+      if (i > 0 && j > 0) best = std::min(best, at(i - 1, j - 1));
+      if (i > 0) best = std::min(best, at(i - 1, j));
+      if (j > 0) best = std::min(best, at(i, j - 1));
+      at(i, j) = best + distance(e[i], l[j]);
+    }
+  StepAlignment path{{static_cast<int>(n - 1), static_cast<int>(m - 1)}};
+  for (std::size_t i = n - 1, j = m - 1; i > 0 || j > 0; path.push_back({static_cast<int>(i), static_cast<int>(j)})) {
+    if (i > 0 && j > 0 && at(i - 1, j - 1) <= at(i - 1, j) && at(i - 1, j - 1) <= at(i, j - 1)) {
+      --i;
+      --j;
+    } else if (i > 0 && (j == 0 || at(i - 1, j) <= at(i, j - 1))) {
+      --i;
+    } else {
+      --j;
+    }
+  }
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// Random traces on a coarse grid, so that equal costs (the ties the spec orders) are common.
+TEST(TraceAlignment, TheSamePathAsTheSpecsFullMatrixTiesIncluded) {
+  Rng rng(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<TracePoint3> e(1 + rng.below(30)), l(1 + rng.below(30));
+    for (auto* trace : {&e, &l})
+      for (TracePoint3& p : *trace) p = {static_cast<double>(rng.below(4)), static_cast<double>(rng.below(4)), 0.0};
+    ASSERT_EQ(align_traces(e, l), spec_alignment(e, l)) << "trial " << trial;
   }
 }
 
