@@ -1,9 +1,9 @@
 #include "engine/writing/writing_score.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
+
+#include "engine/writing/point_grid.hpp"
 
 namespace sc::writing {
 namespace {
@@ -14,42 +14,6 @@ double total_ink_length(const std::vector<TracePoint>& trace) {
     if (trace[i].pen) total += std::hypot(trace[i].x - trace[i - 1].x, trace[i].y - trace[i - 1].y);
   return total;
 }
-
-// Buckets points into square cells of side `cell` so that every point within `cell` of a query lies in the
-// 3 x 3 block of cells around it.
-class PointGrid {
- public:
-  PointGrid(const std::vector<Point2>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i)
-      cells_[key(cell_of(points[i].x), cell_of(points[i].y))].push_back(i);
-  }
-
-  // Distance to the nearest point, or +inf when none is within `cell`; stops early once <= `good_enough`.
-  double nearest(const Point2& q, double good_enough) const {
-    const std::int64_t cx = cell_of(q.x), cy = cell_of(q.y);
-    double best2 = INFINITY;
-    const double good2 = good_enough * good_enough;
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        auto it = cells_.find(key(cx + dx, cy + dy));
-        if (it == cells_.end()) continue;
-        for (std::size_t i : it->second) {
-          const double ex = points_[i].x - q.x, ey = points_[i].y - q.y;
-          best2 = std::min(best2, ex * ex + ey * ey);
-          if (best2 <= good2) return std::sqrt(best2);
-        }
-      }
-    return best2 <= cell_ * cell_ ? std::sqrt(best2) : INFINITY;
-  }
-
- private:
-  std::int64_t cell_of(double v) const { return static_cast<std::int64_t>(std::floor(v / cell_)); }
-  static std::int64_t key(std::int64_t cx, std::int64_t cy) { return cx * 0x100000001LL + cy; }
-
-  const std::vector<Point2>& points_;
-  double cell_;
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
-};
 
 double credit(double d, const WritingScoreParams& p) {
   if (d <= p.tolerance_px) return 1.0;

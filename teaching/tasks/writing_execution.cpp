@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 
+#include "engine/writing/point_grid.hpp"
 #include "engine/writing/writing_score.hpp"
 
 namespace sc {
@@ -17,16 +17,17 @@ double credit(double d) {
   return (p.cutoff_px - d) / (p.cutoff_px - p.tolerance_px);
 }
 
-// Mean credit of each point of `from` at its distance to the nearest point of `to`.
+// Mean credit of each point of `from` at its distance to the nearest point of `to`. Only points within the
+// cutoff earn credit, so a grid of cutoff-sized cells finds the same nearest distance without scanning all of
+// `to`, and a point within the tolerance ends the search (full credit either way).
 double mean_credit(const std::vector<TracePoint3>& from, const std::vector<TracePoint3>& to) {
   if (from.empty() || to.empty()) return 0.0;
+  const writing::WritingScoreParams p;
+  std::vector<writing::Point2> targets;
+  for (const TracePoint3& b : to) targets.push_back({b[0], b[1]});
+  const writing::PointGrid grid(targets, p.cutoff_px);
   double sum = 0.0;
-  for (const TracePoint3& a : from) {
-    double nearest = std::numeric_limits<double>::infinity();  // squared: one square root per point
-    for (const TracePoint3& b : to)
-      nearest = std::min(nearest, (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]));
-    sum += credit(std::sqrt(nearest));
-  }
+  for (const TracePoint3& a : from) sum += credit(grid.nearest({a[0], a[1]}, p.tolerance_px));
   return sum / static_cast<double>(from.size());
 }
 
