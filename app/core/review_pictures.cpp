@@ -4,8 +4,6 @@
 #include <cstdio>
 #include <set>
 
-#include "engine/core/error.hpp"
-
 namespace sc {
 namespace {
 
@@ -46,14 +44,6 @@ review_view::SkillPalette session_palette(const review::ExpertiseRounds& rounds)
   std::vector<int> skills;
   for (const auto& s : rounds.skills) skills.push_back(s.skill);
   return review_view::SkillPalette(std::move(skills));
-}
-
-review_view::SkillPalette session_palette(const TaskKit& kit, const review::SessionRecord& record) {
-  try {
-    return session_palette(review::expertise_rounds(kit, record));
-  } catch (const InputError&) {
-    return {};  // the expertise chart says what is wrong with the diagnoses
-  }
 }
 
 review_view::TrialPicture trial_picture(const review::TrialReview& trial, const review_view::SkillPalette& palette) {

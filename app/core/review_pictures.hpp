@@ -17,9 +17,8 @@ namespace sc {
 
 review_view::ReviewPath review_path(const review::TrialTrack& track, const std::vector<review::SkillSpan>& spans);
 // The colours of one session's pictures: the skills its diagnoses weigh (the expertise chart's) take the hues in
-// turn; a session whose diagnoses cannot be read gets the palette by skill id.
+// turn. A session whose diagnoses cannot be read gets the default palette (by skill id).
 review_view::SkillPalette session_palette(const review::ExpertiseRounds& rounds);
-review_view::SkillPalette session_palette(const TaskKit& kit, const review::SessionRecord& record);
 review_view::TrialPicture trial_picture(const review::TrialReview& trial, const review_view::SkillPalette& palette);
 // Title, outcome lines, the legend of every skill in the picture (learner's, expert's and ghost's) and the plot.
 review_view::TrialImageText trial_image_text(const std::string& learner, const review::TrialReview& trial);

@@ -61,8 +61,8 @@ void draw_overlay_points(ImDrawList& d, ImVec2 o, ImVec2 size, const std::vector
   if (learner.size() < 2 || reference.size() < 2) return;
   const std::vector<ImVec2> e = thinned(fit_into_box(reference, o, size, bounds), 5.0f),
                             l = thinned(fit_into_box(learner, o, size, bounds), 1.5f);
-  draw_thick_path(d, e, band, 7.0f);
-  draw_thick_path(d, l, kOverlayLearner, 2.5f);
+  draw_thick_path(d, e, band, kOverlayBandWidth);
+  draw_thick_path(d, l, kOverlayLearner, kOverlayLearnerWidth);
   d.AddCircleFilled(l.back(), 4.0f, kOverlayLearner);
 }
 
@@ -83,7 +83,7 @@ void draw_part_overlay(ImDrawList& d, ImVec2 o, ImVec2 size, const PartOverlay& 
   if (overlay.last <= overlay.first || overlay.last >= overlay.learner.size()) return;
   const std::vector<ImVec2> part(overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.first),
                                  overlay.learner.begin() + static_cast<std::ptrdiff_t>(overlay.last) + 1);
-  draw_thick_path(d, thinned(fit_into_box(part, o, size, bounds), 1.5f), kOverlayPart, 4.0f);
+  draw_thick_path(d, thinned(fit_into_box(part, o, size, bounds), 1.5f), kOverlayPart, kOverlayPartWidth);
 }
 
 }  // namespace sc::review_view

@@ -13,6 +13,10 @@ inline constexpr ImU32 kOverlayLearner = IM_COL32(255, 226, 138, 235);  // the l
 inline constexpr ImU32 kOverlayGuide = IM_COL32(91, 155, 255, 80);      // the expert's path or the guide (blue band)
 inline constexpr ImU32 kOverlayHand = IM_COL32(120, 220, 170, 90);      // the learner's hand (green band)
 inline constexpr ImU32 kOverlayPart = IM_COL32(255, 140, 66, 255);      // a part of the learner's path (orange)
+// Their line widths in pixels, for the pictures and their legends alike.
+inline constexpr float kOverlayLearnerWidth = 2.5f;
+inline constexpr float kOverlayBandWidth = 7.0f;
+inline constexpr float kOverlayPartWidth = 4.0f;
 
 // The joint bounds of several point sets.
 struct OverlayBounds {

@@ -144,8 +144,9 @@ RgbaImage render_hand_image(GlContext& context, const HandOverlay& overlay, cons
         // The legend: what each line is.
         float lx = x;
         for (const auto& [color, width_px, label] :
-             {std::tuple{kOverlayLearner, 2.5f, "the learner's word"}, std::tuple{kOverlayGuide, 7.0f, "the guide"},
-              std::tuple{kOverlayHand, 7.0f, "the hand"}}) {
+             {std::tuple{kOverlayLearner, kOverlayLearnerWidth, "the learner's word"},
+              std::tuple{kOverlayGuide, kOverlayBandWidth, "the guide"},
+              std::tuple{kOverlayHand, kOverlayBandWidth, "the hand"}}) {
           dl.AddLine({lx, y + fs * 0.5f}, {lx + fs * 1.6f, y + fs * 0.5f}, color, width_px * s);
           dl.AddText({lx + fs * 2.1f, y}, kCaptionText, label);
           lx += fs * 2.1f + ImGui::CalcTextSize(label).x + fs * 1.6f;
@@ -175,9 +176,9 @@ RgbaImage render_places_image(GlContext& context, const std::vector<PlacePicture
         y = text_lines(dl, {x, y}, lines, wrap) + 6.0f * s;
         float lx = x;
         for (const auto& [color, width_px, label] :
-             {std::tuple{kOverlayLearner, 2.5f, "the learner's trial"},
-              std::tuple{kOverlayGuide, 7.0f, "the expert's, same scenario"},
-              std::tuple{kOverlayPart, 4.0f, "the part aligned with the expert's skill"}}) {
+             {std::tuple{kOverlayLearner, kOverlayLearnerWidth, "the learner's trial"},
+              std::tuple{kOverlayGuide, kOverlayBandWidth, "the expert's, same scenario"},
+              std::tuple{kOverlayPart, kOverlayPartWidth, "the part aligned with the expert's skill"}}) {
           dl.AddLine({lx, y + fs * 0.5f}, {lx + fs * 1.6f, y + fs * 0.5f}, color, width_px * s);
           dl.AddText({lx + fs * 2.1f, y}, kCaptionText, label);
           lx += fs * 2.1f + ImGui::CalcTextSize(label).x + fs * 1.6f;

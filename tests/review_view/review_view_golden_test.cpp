@@ -36,6 +36,11 @@ class ReviewPictures : public ::testing::Test {
   }
   static void TearDownTestSuite() { review_.reset(); }
 
+  // The session's colours, as the Review and the report take them.
+  static review_view::SkillPalette palette() {
+    return session_palette(review::expertise_rounds(review_->kit(), review_->record()));
+  }
+
   static std::unique_ptr<review::SessionReview> review_;
   std::unique_ptr<GlContext> context_ = create_offscreen_context_from_env(kWidth, kHeight);
 };
@@ -45,18 +50,16 @@ TEST_F(ReviewPictures, TrialViewerMatchesGolden) {
   // The cut-short second pre-test trial would show little; the first shows a whole attempt.
   const int seq = review_->record().trials_of(records::TrialKind::Pretest).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image = review_view::render_trial_image(
-      *context_, trial_picture(trial, session_palette(review_->kit(), review_->record())),
-      trial_image_text("Ada", trial), kWidth, kHeight);
+  const RgbaImage image = review_view::render_trial_image(*context_, trial_picture(trial, palette()),
+                                                          trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer"));
 }
 
 TEST_F(ReviewPictures, PracticeTrialWithGhostMatchesGolden) {
   const int seq = review_->record().trials_of(records::TrialKind::Practice).front()->seq;
   const review::TrialReview trial = review_->trial(seq);
-  const RgbaImage image = review_view::render_trial_image(
-      *context_, trial_picture(trial, session_palette(review_->kit(), review_->record())),
-      trial_image_text("Ada", trial), kWidth, kHeight);
+  const RgbaImage image = review_view::render_trial_image(*context_, trial_picture(trial, palette()),
+                                                          trial_image_text("Ada", trial), kWidth, kHeight);
   EXPECT_TRUE(test::matches_golden(image, "review/trial_viewer_practice"));
 }
 
@@ -81,7 +84,7 @@ TEST_F(ReviewPictures, BeforeAfterMatchesGolden) {
 // alone, skills 6 and 14 of this session were both yellow).
 TEST_F(ReviewPictures, NoTwoSkillsOfTheSessionShareAColour) {
   const review::ExpertiseRounds rounds = review::expertise_rounds(review_->kit(), review_->record());
-  const review_view::ExpertiseChart chart = expertise_chart(rounds, session_palette(review_->kit(), review_->record()));
+  const review_view::ExpertiseChart chart = expertise_chart(rounds, session_palette(rounds));
   ASSERT_GE(chart.skills.size(), 2u);
   ASSERT_LE(chart.skills.size(), 8u);
   std::set<ImU32> colours;
@@ -92,8 +95,7 @@ TEST_F(ReviewPictures, NoTwoSkillsOfTheSessionShareAColour) {
 TEST_F(ReviewPictures, ExpertiseChartMatchesGolden) {
   const review::ExpertiseRounds rounds = review::expertise_rounds(review_->kit(), review_->record());
   const RgbaImage image = review_view::render_expertise_chart_image(
-      *context_, expertise_chart(rounds, session_palette(review_->kit(), review_->record())),
-      "Expertise per skill across rounds", kWidth);
+      *context_, expertise_chart(rounds, session_palette(rounds)), "Expertise per skill across rounds", kWidth);
   EXPECT_TRUE(test::matches_golden(image, "review/expertise_chart"));
 }
 

@@ -65,6 +65,11 @@ TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Js
   return out;
 }
 
+TrialPartPictureData trial_part_picture_data(const review::SkillPlace& place) {
+  return trial_part_picture_data(place.learner_trial, place.expert_trial, place.learner_begin, place.learner_end,
+                                 place.learner_steps);
+}
+
 void draw_skill_picture(ImDrawList& d, ImVec2 o, ImVec2 size, const SkillPictureData& line, bool highlight) {
   d.AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 33, 43, 255), 6.0f);
   if (line.points.size() < 2) return;

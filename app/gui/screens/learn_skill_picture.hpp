@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/review_view/overlay_points.hpp"
+#include "teaching/review/diagnosis_explained.hpp"
 #include "teaching/sessions/session_analysis.hpp"
 
 namespace sc {
@@ -27,6 +28,8 @@ using TrialPartPictureData = review_view::PartOverlay;
 // The learner's control steps [begin, end) of its `steps`.
 TrialPartPictureData trial_part_picture_data(const Json& learner_trial, const Json& expert_trial, int begin, int end,
                                              int steps);
+// The same for a place of the review's diagnosis (the Review screen and the report).
+TrialPartPictureData trial_part_picture_data(const review::SkillPlace& place);
 
 void draw_skill_picture(ImDrawList& draw_list, ImVec2 top_left, ImVec2 size, const SkillPictureData& picture,
                         bool highlight);

@@ -54,7 +54,14 @@ void ReviewModel::select_session(std::int64_t id) {
   try {
     review::SessionRecord record = review::load_session_record(*store_, id);
     session_ = std::make_unique<review::SessionReview>(kits_.kit_of(record.session), std::move(record));
-    palette_ = session_palette(session_->kit(), session_->record());
+    rounds_.reset();
+    rounds_problem_.clear();
+    try {
+      rounds_ = review::expertise_rounds(session_->kit(), session_->record());
+    } catch (const InputError& e) {
+      rounds_problem_ = e.what();
+    }
+    palette_ = rounds_ ? session_palette(*rounds_) : review_view::SkillPalette{};
     trial_.reset();
     groups_.reset();
     test_trials_.reset();
@@ -120,10 +127,10 @@ std::vector<std::string> ReviewModel::before_after_lines(std::size_t group) {
 
 const review_view::ExpertiseChart* ReviewModel::expertise_chart() {
   if (!chart_ && session_) {
-    try {
-      chart_ = sc::expertise_chart(review::expertise_rounds(session_->kit(), session_->record()), palette_);
-    } catch (const InputError& e) {
-      message = e.what();
+    if (rounds_) {
+      chart_ = sc::expertise_chart(*rounds_, palette_);
+    } else {
+      message = rounds_problem_;
       chart_.emplace();
     }
   }
@@ -157,11 +164,7 @@ const TrialPartPictureData* ReviewModel::place_picture(int skill) {
   if (!d) return nullptr;
   for (const review::SkillExplanation& s : d->skills)
     if (s.skill == skill && s.place)
-      return &place_pictures_
-                  .emplace(skill, trial_part_picture_data(s.place->learner_trial, s.place->expert_trial,
-                                                          s.place->learner_begin, s.place->learner_end,
-                                                          s.place->learner_steps))
-                  .first->second;
+      return &place_pictures_.emplace(skill, trial_part_picture_data(*s.place)).first->second;
   return nullptr;
 }
 

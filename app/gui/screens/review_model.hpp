@@ -81,6 +81,8 @@ class ReviewModel {
   std::optional<std::vector<review::BeforeAfterGroup>> groups_;
   std::optional<std::vector<review::TrialReview>> test_trials_;
   std::map<std::size_t, review_view::BeforeAfterPicture> group_pictures_;
+  std::optional<review::ExpertiseRounds> rounds_;  // read once per session: the chart and the palette
+  std::string rounds_problem_;                     // why rounds_ is empty, shown when the chart is asked for
   std::optional<review_view::ExpertiseChart> chart_;
   std::optional<review::DiagnosisExplanation> diagnosis_;
   bool diagnosis_tried_ = false;

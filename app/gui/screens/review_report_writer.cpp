@@ -30,8 +30,7 @@ std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExp
     out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " +
                        (place.reason == TargetReason::Missing ? "missed" : "done badly") + " in pre-test trial " +
                        std::to_string(place.seq),
-                   trial_part_picture_data(place.learner_trial, place.expert_trial, place.learner_begin,
-                                           place.learner_end, place.learner_steps)});
+                   trial_part_picture_data(place)});
   }
   return out;
 }
@@ -81,7 +80,15 @@ class ReportWriter {
       }
     }
     const std::string prefix = "session" + std::to_string(row.session_id) + "_";
-    const review_view::SkillPalette palette = session_palette(review.kit(), review.record());
+    // The expertise chart's rounds also give the session's skill colours, so they are read before any picture.
+    std::optional<review::ExpertiseRounds> rounds;
+    std::string rounds_problem;
+    try {
+      rounds = review::expertise_rounds(review.kit(), review.record());
+    } catch (const InputError& e) {
+      rounds_problem = one_line(e.what());
+    }
+    const review_view::SkillPalette palette = rounds ? session_palette(*rounds) : review_view::SkillPalette{};
     for (const auto& t : trials) {
       report.trials.push_back({row.session_id, t});
       report.trial_images.push_back(
@@ -102,12 +109,7 @@ class ReportWriter {
                                                  "Before / after: " + group.title, before_after_lines(group, trials),
                                                  request_.image_width, request_.image_height),
           prefix + "before_after_" + group.family + ".png", "Before / after: " + group.title));
-    std::optional<review::ExpertiseRounds> rounds;
-    try {
-      rounds = review::expertise_rounds(review.kit(), review.record());
-    } catch (const InputError& e) {
-      result_.problems.push_back(where + ", expertise chart left out: " + one_line(e.what()));
-    }
+    if (!rounds_problem.empty()) result_.problems.push_back(where + ", expertise chart left out: " + rounds_problem);
     if (rounds && !rounds->rounds.empty())
       report.expertise_chart =
           save(review_view::render_expertise_chart_image(context(), expertise_chart(*rounds, palette),
