@@ -144,7 +144,8 @@ class LearnDiagnosisScreen final : public Screen {
       // so, or a learner wonders why a skill with no mistake gets a drill (with no penalty anywhere the intro says it).
       const std::string penalty = why_words(e, m);
       const bool by_use = drilled && penalty.empty() && worst > 1e-9;
-      const std::string why = by_use ? "no mistake seen: one the expert uses most" : penalty;
+      const std::string why =
+          by_use ? std::string(target_reason_words(TargetReason::NoMistake)) + ": one the expert uses most" : penalty;
       if (!why.empty()) {
         // Beside the skill's words when it fits, else on a line of its own (long parking names).
         const float beside = ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x - 10 * sc;
