@@ -55,6 +55,7 @@ CompileConfig CompileConfig::writing_defaults() {
   // 1-px pen steps are far more steps than segmentation needs: one model step per 8 px of path, and the
   // reference's mean segment (~250 px) in those steps.
   c.resample_step = 8.0;
+  c.readout_phases = 3;
   c.prior_rate = 30.0;
   // From random weights CompILE cuts letters into strokes: start from where the words stop repeating.
   // The paper's learning rate and latent KL keep the latent posterior uniform on our data.
@@ -97,6 +98,7 @@ void CompileConfig::validate(const std::string& where) const {
   need(patience >= 1, "patience must be >= 1");
   need(restarts >= 1 && restarts <= 64, "restarts must be in 1..64");
   need(resample_step >= 0.0, "resample_step must be >= 0");
+  need(readout_phases >= 1 && readout_phases <= 16, "readout_phases must be in 1..16");
   need(warm_start_iterations >= 0, "warm_start_iterations must be >= 0");
   need(warm_start_learning_rate >= 0.0 && warm_start_learning_rate < 1.0, "warm_start_learning_rate must be in [0, 1)");
   need(!warm_start_units || warm_start_iterations > 0, "warm_start_units needs warm_start_iterations > 0");
@@ -132,6 +134,7 @@ Json to_json(const CompileConfig& c, bool every_field) {
            {"warm_start_unit_weight", c.warm_start_unit_weight},
            {"beta_usage", c.beta_usage}};
   if (every_field || !c.encoder_reads_actions) out["encoder_reads_actions"] = c.encoder_reads_actions;
+  if (every_field || c.readout_phases != 1) out["readout_phases"] = c.readout_phases;
   return out;
 }
 
@@ -172,6 +175,8 @@ CompileConfig compile_config_from_json(const JsonView& v) {
   if (const auto weight = v.find("warm_start_unit_weight")) c.warm_start_unit_weight = weight->number();
   if (const auto usage = v.find("beta_usage")) c.beta_usage = usage->number();
   if (const auto reads = v.find("encoder_reads_actions")) c.encoder_reads_actions = reads->boolean();
+  // Absent in models written before the phase vote (they read one phase).
+  if (const auto phases = v.find("readout_phases")) c.readout_phases = static_cast<int>(phases->integer());
   return c;
 }
 

@@ -46,6 +46,9 @@ struct CompileConfig {
   // Arc-length resampling before the model (0 = off). Actions are read as displacements; each model step
   // covers `resample_step` units of path length and its action is the mean unit direction over it.
   double resample_step = 0.0;
+  // Segmenting (not training) reads a resampled trajectory at this many phases of the resampling and keeps
+  // what most of them agree on (phase_vote.hpp: why, and the vote). 1 = one reading, from the first point.
+  int readout_phases = 1;
   // Iterations of warm start before ordinary training (0 = off): every boundary is fixed at the places
   // where the training data stop repeating (find_repeat_boundaries, no true boundaries involved) while the
   // decoder and latent heads learn to reconstruct those segments and the boundary head learns to predict

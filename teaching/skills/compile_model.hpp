@@ -34,7 +34,10 @@ class CompileModel {
 
   // Segments in the trajectories' own action indices: eval mode, argmax boundaries and skills, no
   // gradients, all trajectories in one batch. Throws InputError if dimensions do not match the model.
+  // A resampling model reads each trajectory at config().readout_phases phases and votes (phase_vote.hpp).
   std::vector<Segmentation> segment(const std::vector<StepSequence>& trajectories) const;
+  // How many phases segment() reads; the weights are untouched. Throws InputError outside 1..16.
+  void set_readout_phases(int phases);
   // Mean squared action reconstruction error per model step (eval mode, hard segments).
   double action_reconstruction_error(const std::vector<StepSequence>& trajectories) const;
 

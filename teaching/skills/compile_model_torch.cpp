@@ -6,6 +6,7 @@
 #include "engine/core/error.hpp"
 #include "teaching/skills/compile_torch.hpp"
 #include "teaching/skills/model_file.hpp"
+#include "teaching/skills/phase_vote.hpp"
 
 namespace sc {
 
@@ -31,7 +32,7 @@ std::filesystem::path model_sidecar_path(const std::filesystem::path& file) {
 }
 
 std::vector<ModelSteps> to_model_inputs(const std::vector<StepSequence>& trajectories, const CompileConfig& config,
-                                        const std::string& what) {
+                                        const std::string& what, double phase) {
   std::vector<ModelSteps> out;
   out.reserve(trajectories.size());
   for (std::size_t i = 0; i < trajectories.size(); ++i) {
@@ -52,7 +53,7 @@ std::vector<ModelSteps> to_model_inputs(const std::vector<StepSequence>& traject
     }
     for (float v : s.actions)
       if (!std::isfinite(v)) throw InputError(where, "contains a non-finite action");
-    out.push_back(to_model_steps(s, config.resample_step));
+    out.push_back(to_model_steps(s, config.resample_step, phase));
     if (!config.uses_states()) {  // states are not read in action mode; do not carry them around
       out.back().steps.states.clear();
       out.back().steps.state_dim = 0;
@@ -74,10 +75,12 @@ int CompileModel::parameter_count() const {
   return static_cast<int>(n);
 }
 
-std::vector<Segmentation> CompileModel::segment(const std::vector<StepSequence>& trajectories) const {
-  torch::NoGradGuard no_grad;
-  const auto inputs = to_model_inputs(trajectories, config(), "trajectory");
-  std::vector<Segmentation> out(trajectories.size());
+namespace {
+
+// Segments model inputs in the trajectories' own action indices (an empty input gives no segments).
+std::vector<Segmentation> segment_inputs(const compile_detail::CompileNetwork& net,
+                                         const std::vector<ModelSteps>& inputs) {
+  std::vector<Segmentation> out(inputs.size());
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < inputs.size(); ++i)
     if (inputs[i].steps.length() > 0) pending.push_back(i);
@@ -85,8 +88,8 @@ std::vector<Segmentation> CompileModel::segment(const std::vector<StepSequence>&
     const std::size_t last = std::min(pending.size(), first + kMaxBatch);
     std::vector<const StepSequence*> chunk;
     for (std::size_t i = first; i < last; ++i) chunk.push_back(&inputs[pending[i]].steps);
-    const Batch batch = make_batch(chunk, config());
-    const auto readout = compile_detail::hard_readout(impl_->net, batch);
+    const Batch batch = make_batch(chunk, net.config);
+    const auto readout = compile_detail::hard_readout(net, batch);
     for (std::size_t i = first; i < last; ++i) {
       const ModelSteps& m = inputs[pending[i]];
       const Segmentation model_segments =
@@ -95,6 +98,36 @@ std::vector<Segmentation> CompileModel::segment(const std::vector<StepSequence>&
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<Segmentation> CompileModel::segment(const std::vector<StepSequence>& trajectories) const {
+  torch::NoGradGuard no_grad;
+  const CompileConfig& c = config();
+  const int phases = c.resample_step > 0.0 ? c.readout_phases : 1;
+  std::vector<ModelSteps> inputs;  // phase-major: phase p of trajectory i is inputs[p * n + i]
+  for (int p = 0; p < phases; ++p)
+    for (ModelSteps& m : to_model_inputs(trajectories, c, "trajectory", c.resample_step * p / phases))
+      inputs.push_back(std::move(m));
+  std::vector<Segmentation> read = segment_inputs(impl_->net, inputs);
+  if (phases == 1) return read;
+  const std::size_t n = trajectories.size();
+  std::vector<Segmentation> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<Segmentation> votes;
+    for (int p = 0; p < phases; ++p) votes.push_back(std::move(read[static_cast<std::size_t>(p) * n + i]));
+    const int length = trajectories[i].length();
+    out[i] = vote_phases(votes, length, phase_vote_tolerance(length, inputs[i].steps.length()));
+  }
+  return out;
+}
+
+void CompileModel::set_readout_phases(int phases) {
+  CompileConfig c = impl_->net.config;
+  c.readout_phases = phases;
+  c.validate("readout phases");
+  impl_->net.config = c;
 }
 
 double CompileModel::action_reconstruction_error(const std::vector<StepSequence>& trajectories) const {

@@ -149,7 +149,7 @@ namespace sc {
 struct CompileModel::Impl {
   compile_detail::CompileNetwork net;
 };
-// Validates dimensions and converts to model steps (resampling per the config).
+// Validates dimensions and converts to model steps (resampling per the config, from `phase`).
 std::vector<ModelSteps> to_model_inputs(const std::vector<StepSequence>& trajectories, const CompileConfig& config,
-                                        const std::string& what);
+                                        const std::string& what, double phase = 0.0);
 }  // namespace sc

@@ -34,7 +34,7 @@ void append_group(const StepSequence& in, int begin, int end, double path, Model
 
 }  // namespace
 
-ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step) {
+ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step, double phase) {
   ModelSteps out;
   const int t_len = trajectory.length();
   if (resample_step <= 0.0) {
@@ -46,7 +46,7 @@ ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step) 
   out.steps.state_dim = trajectory.state_dim;
   out.steps.action_dim = trajectory.action_dim;
   int begin = 0;
-  double path = 0.0;
+  double path = phase;
   for (int t = 0; t < t_len; ++t) {
     path += step_length(trajectory, t);
     if (path >= resample_step) {

@@ -20,7 +20,9 @@ struct ModelSteps {
   std::vector<int> original_begin;  // T' + 1 entries, strictly increasing, from 0 to T
 };
 
-ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step);
+// `phase` (0 <= phase < resample_step) is path counted as already walked before the first action, so the
+// first group is that much shorter and every later group edge moves accordingly (phase_vote.hpp).
+ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step, double phase = 0.0);
 
 // Maps a segmentation in model steps back to original action indices (still covering [0, T)).
 Segmentation to_original_indices(const Segmentation& model_segments, const ModelSteps& steps);

@@ -94,6 +94,42 @@ TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
   EXPECT_THROW(loaded.extract(wrong), InputError);
 }
 
+TEST(CompileModel, AResamplingModelReadsAtItsPhasesAndKeepsTheSettingInItsFile) {
+  CompileConfig c = CompileConfig::writing_defaults();  // action mode, resampled, 3 phases
+  c.hidden = 16;
+  c.latent_size = 5;
+  c.iterations = 2;
+  c.batch_size = 6;
+  c.warm_start_iterations = 0;
+  c.restarts = 1;
+  c.resample_step = 2.5;
+  ASSERT_EQ(c.readout_phases, 3);
+  CompileModel model = CompileTrainer(c).train(data(), data());
+  const auto trajectories = data();
+  const auto voted = model.segment(trajectories);
+  for (std::size_t i = 0; i < trajectories.size(); ++i) {
+    ASSERT_FALSE(voted[i].segments.empty());
+    EXPECT_EQ(voted[i].segments.front().begin, 0);
+    EXPECT_EQ(voted[i].segments.back().end, trajectories[i].length());
+    for (std::size_t k = 1; k < voted[i].segments.size(); ++k)
+      EXPECT_EQ(voted[i].segments[k].begin, voted[i].segments[k - 1].end);
+    EXPECT_EQ(model.segment({trajectories[i]})[0], voted[i]);  // batched == one at a time
+  }
+  const auto path = model_scratch("phases.scm");
+  model.save(path);
+  EXPECT_EQ(CompileModel::load(path).config().readout_phases, 3);
+  EXPECT_EQ(CompileModel::load(path).segment(trajectories), voted);
+
+  model.set_readout_phases(1);
+  const auto single = model.segment(trajectories);
+  model.save(model_scratch("one_phase.scm"));
+  EXPECT_EQ(CompileModel::load(model_scratch("one_phase.scm")).config().readout_phases, 1);
+  EXPECT_NE(single, voted) << "three phases read these trajectories exactly as one";
+  EXPECT_THROW(model.set_readout_phases(0), InputError);
+  EXPECT_THROW(model.set_readout_phases(17), InputError);
+  EXPECT_EQ(model.config().readout_phases, 1);
+}
+
 TEST(CompileModel, BadFilesGiveOneLineInputErrors) {
   const auto path = trained_model();
   const std::string good = test::read_bytes(path);

@@ -25,6 +25,13 @@ TEST(ModelSteps, ZeroStepIsIdentity) {
   EXPECT_EQ(m.original_begin.back(), 7);
 }
 
+TEST(ModelSteps, APhaseShortensOnlyTheFirstGroup) {
+  // 23 one-unit steps at 5 units per model step, read 2 units into the first group: 3, then 5s, then 0.
+  const ModelSteps m = to_model_steps(straight(23, 1.0f), 5.0, 2.0);
+  EXPECT_EQ(m.original_begin, (std::vector<int>{0, 3, 8, 13, 18, 23}));
+  EXPECT_EQ(to_model_steps(straight(23, 1.0f), 5.0, 0.0).original_begin, (std::vector<int>{0, 5, 10, 15, 20, 23}));
+}
+
 TEST(ModelSteps, ResamplesByArcLengthAndMapsBoundariesBack) {
   // 23 one-unit steps at 5 units per model step: groups of 5, 5, 5, 5 and a remainder of 3.
   const StepSequence s = straight(23, 1.0f);
