@@ -10,7 +10,8 @@
 // --noise-floor calibrates quality-aware expertise's noise floor on the noise-only learners
 // (execution_noise_floor.hpp).
 // --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
-// drives' (docs/skills.md, "Robustness on realistic learners").
+// drives' (docs/skills.md, "Robustness on realistic learners"). --readout-phases P reads the model at P phases
+// of its resampling instead of the file's number (phase_vote.hpp), for every table.
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -62,7 +63,17 @@ struct EvaluateArgs {
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
+  std::optional<int> readout_phases;  // instead of the model file's (CompileConfig::readout_phases)
 };
+
+// The model as the command reads it: the file's, at --readout-phases when given.
+std::shared_ptr<const CompileModel> load_model(const EvaluateArgs& args) {
+  const int state_dim = args.task == TaskKind::parking ? kParkingStateDim : writing::kWritingStateDim;
+  auto model =
+      std::make_shared<CompileModel>(CompileModel::load(args.model, std::string(to_string(args.task)), state_dim, 2));
+  if (args.readout_phases) model->set_readout_phases(*args.readout_phases);
+  return model;
+}
 
 // Parking: the same held-out scenarios' expert drives driven by realistic drivers
 // (teaching/learners/parking/drive_skill_agreement.hpp), one row per condition.
@@ -124,7 +135,7 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
 std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& args) {
   if (args.time_heuristic)
     return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
-  return std::make_shared<CompileExtractor>(CompileExtractor::load(args.model, std::string(to_string(args.task))));
+  return std::make_shared<CompileExtractor>(load_model(args));
 }
 
 // The writing kit the planted and noise-floor tables diagnose with: the model's recorded noise floor, as the app.
@@ -202,12 +213,11 @@ int print_noise_floor(const EvaluateArgs& args, std::uint64_t seed) {
 int run(const EvaluateArgs& args) {
   if (args.model.empty() && !args.time_heuristic)
     throw InputError("evaluate-skills", "give a model (--model FILE) or --time-heuristic");
-  std::optional<CompileModel> model;
+  std::shared_ptr<const CompileModel> model;
   // The time heuristic has no training seed; 1 is what a model trained with the default --seed 0 is scored on.
   std::uint64_t seed = args.seed ? *args.seed : 1;
   if (!args.time_heuristic) {
-    const int state_dim = args.task == TaskKind::parking ? kParkingStateDim : writing::kWritingStateDim;
-    model.emplace(CompileModel::load(args.model, std::string(to_string(args.task)), state_dim, 2));
+    model = load_model(args);
     // Held-out data: the training data was generated from the model's own seed.
     seed = args.seed ? *args.seed : model->config().seed + 1;
     if (seed == model->config().seed)
@@ -239,7 +249,7 @@ int run(const EvaluateArgs& args) {
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
     std::optional<CompileExtractor> compile;
-    if (model) compile.emplace(CompileExtractor::load(args.model, std::string(to_string(args.task))));
+    if (model) compile.emplace(model);
     const SkillExtractor& extractor = compile ? static_cast<const SkillExtractor&>(*compile) : heuristic;
     report["realistic_drivers"] = realistic_driver_rows(extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(extractor, drives);
@@ -295,10 +305,16 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
       ->needs(planted);
   planted->excludes(sub.get_option("--robustness"));
   noise_floor->excludes(planted)->excludes(sub.get_option("--robustness"));
-  sub.add_flag("--record", args->record,
-               "With --noise-floor: record the floor in the model's JSON sidecar, where the app reads it "
-               "(train-skills does this for every writing model it trains)")
-      ->needs(noise_floor);
+  auto* record = sub.add_flag("--record", args->record,
+                              "With --noise-floor: record the floor in the model's JSON sidecar, where the app "
+                              "reads it (train-skills does this for every writing model it trains)")
+                     ->needs(noise_floor);
+  sub.add_option("--readout-phases", args->readout_phases,
+                 "Read the model at this many phases of its resampling instead of the file's (1 = one reading, "
+                 "as every model before 2026-12-05; docs/skills.md \"Reading at three phases\")")
+      ->check(CLI::Range(1, 16))
+      ->excludes(heuristic)
+      ->excludes(record);
   return [args] { return run(*args); };
 }
 

@@ -130,6 +130,23 @@ TEST(EvaluateSkillsCommand, PlantedWeaknessesNameTheExpertiseModeAndTheModeNeeds
   EXPECT_EQ(test::count_lines(alone.output), 1) << alone.output;
 }
 
+// --readout-phases reads the model at other phases than its file's; the file's own number gives the same report.
+TEST(EvaluateSkillsCommand, ReadoutPhasesReplaceTheFilesOnlyForTheRun) {
+  const std::string model = test::tiny_model("writing").string();
+  const std::string run = "evaluate-skills --task writing --count 6 --details --model " + model;
+  const auto file = run_skillcoach(run);
+  const auto three = run_skillcoach(run + " --readout-phases 3");
+  const auto one = run_skillcoach(run + " --readout-phases 1");
+  ASSERT_EQ(file.exit_code, 0) << file.output;
+  ASSERT_EQ(three.exit_code, 0) << three.output;
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_EQ(report_json_of(three.output).at("demos"), report_json_of(file.output).at("demos"));
+  EXPECT_NE(report_json_of(one.output).at("demos"), report_json_of(file.output).at("demos"));
+  const auto heuristic = run_skillcoach("evaluate-skills --task writing --time-heuristic --readout-phases 3");
+  EXPECT_EQ(heuristic.exit_code, 2) << heuristic.output;
+  EXPECT_EQ(test::count_lines(heuristic.output), 1) << heuristic.output;
+}
+
 TEST(EvaluateSkillsCommand, NeedsAModelOrTheTimeHeuristic) {
   const auto r = run_skillcoach("evaluate-skills --task writing --count 2");
   EXPECT_EQ(r.exit_code, 2) << r.output;
