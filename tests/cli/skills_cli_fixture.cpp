@@ -9,7 +9,11 @@ namespace sc::test {
 
 std::filesystem::path tiny_model(const std::string& task, unsigned seed) {
   const auto model = scratch_path("skills_cli", "tiny_" + task + "_" + std::to_string(seed) + ".pt");
-  if (std::filesystem::exists(model)) return model;
+  // Kept between test processes, but only while it is newer than the program: a model left by an older build
+  // (another config, another file format) would test the old program's output.
+  if (std::filesystem::exists(model) &&
+      std::filesystem::last_write_time(model) >= std::filesystem::last_write_time(skillcoach_binary()))
+    return model;
   // Writing: 2 warm-start passes (not the default 60) and one run, so the tiny model stays quick.
   const std::string writing =
       task == "writing" ? " --set warm_start_iterations=2 --set restarts=1 --noise-floor-learners 0" : "";

@@ -1,6 +1,6 @@
 #pragma once
 // Shared by the train-skills / segment / evaluate-skills CLI tests: tiny models trained through the real
-// command (a few demonstrations, one or two iterations: about a second each), cached per test binary run.
+// command (a few demonstrations, one or two iterations: about a second each), cached in the build's test output.
 #include <filesystem>
 #include <string>
 
@@ -10,8 +10,9 @@
 
 namespace sc::test {
 
-// Trains `train-skills --task <task> --demos 6 --iterations 2 --seed <seed>` into the scratch folder once
-// and returns the model path; fails the calling test (ADD_FAILURE) when the command fails.
+// Trains `train-skills --task <task> --demos 6 --iterations 2 --seed <seed>` into the scratch folder, once
+// for every build of the program, and returns the model path; fails the calling test (ADD_FAILURE) when the
+// command fails.
 std::filesystem::path tiny_model(const std::string& task, unsigned seed = 3);
 
 // A writing trial file: a wavy line along the baseline for `word`.
