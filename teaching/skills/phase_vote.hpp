@@ -6,8 +6,8 @@
 // the page falls into other groups, and a boundary near the edge of a group can move to another letter or
 // vanish. Segmenting the trace at P phases (the first group shortened by p / P of a step, p = 0..P-1) and
 // keeping what most phases agree on removes that arbitrary choice; on learners' wobbly or other-hand
-// letters it measured better boundaries and letter skills than any one phase (docs/skills.md, *Reading at
-// three phases*).
+// letters it measured better letter skills, and mostly better boundaries, than the one reading from the
+// first point (docs/skills.md, *Reading at three phases*).
 //
 // The vote, on the P segmentations of one trajectory of `length` actions (original action indices):
 //  * every interior boundary (a segment's begin > 0) of every phase is a candidate; its support is the
