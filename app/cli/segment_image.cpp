@@ -1,7 +1,9 @@
 #include "app/cli/segment_image.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <span>
+#include <string>
 
 #include "engine/parking_view/parking_path.hpp"
 #include "engine/parking_view/parking_scene.hpp"
@@ -23,15 +25,37 @@ ImU32 imgui_color(Color c) {
   return IM_COL32(byte(c.r), byte(c.g), byte(c.b), byte(c.a));
 }
 
-// The caption and one legend line per segment, top-left on a dark panel.
-void draw_legend(const ImGuiLayer& imgui, const std::string& caption, const Segmentation& segmentation) {
+std::string legend_line(const SkillSegment& seg) {
+  return "skill " + std::to_string(seg.skill) + ": steps " + std::to_string(seg.begin) + "-" +
+         std::to_string(seg.end - 1);
+}
+
+// The legend's panel: top-left, as wide as its widest line. The picture is drawn to its right, so the panel
+// never hides a part of the path.
+struct LegendPanel {
+  ImVec2 origin;       // the caption's top-left
+  float right = 0.0f;  // the panel's right edge
+};
+
+LegendPanel legend_panel(const ImGuiLayer& imgui, const std::string& caption, const Segmentation& segmentation) {
+  const float s = imgui.scale();
+  const ImVec2 origin(14.0f * s, 12.0f * s);
+  float text = imgui.fonts().bold->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, caption.c_str()).x;
+  for (const SkillSegment& seg : segmentation.segments)
+    text = std::max(text, 30.0f * s + ImGui::CalcTextSize(legend_line(seg).c_str()).x);
+  return {origin, origin.x + text + 10.0f * s};
+}
+
+// The caption and one legend line per segment on a dark panel.
+void draw_legend(const ImGuiLayer& imgui, const LegendPanel& panel, const std::string& caption,
+                 const Segmentation& segmentation) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const SkillColors colors(segmentation);
   const float s = imgui.scale();
-  const ImVec2 origin(14.0f * s, 12.0f * s);
+  const ImVec2 origin = panel.origin;
   const float line = ImGui::GetFontSize() * 1.35f;
   const auto rows = static_cast<float>(segmentation.segments.size() + 1);
-  dl->AddRectFilled({origin.x - 8 * s, origin.y - 6 * s}, {origin.x + 430 * s, origin.y + line * rows + 2 * s},
+  dl->AddRectFilled({origin.x - 8 * s, origin.y - 6 * s}, {panel.right, origin.y + line * rows + 2 * s},
                     IM_COL32(12, 15, 20, 190), 8 * s);
   dl->AddText(imgui.fonts().bold, ImGui::GetFontSize(), origin, IM_COL32(255, 255, 255, 255), caption.c_str());
   for (std::size_t i = 0; i < segmentation.segments.size(); ++i) {
@@ -39,9 +63,7 @@ void draw_legend(const ImGuiLayer& imgui, const std::string& caption, const Segm
     const float y = origin.y + line * static_cast<float>(i + 1);
     dl->AddRectFilled({origin.x, y + 3 * s}, {origin.x + 22 * s, y + line - 6 * s}, imgui_color(colors.of(seg.skill)),
                       3 * s);
-    const std::string text = "skill " + std::to_string(seg.skill) + ": steps " + std::to_string(seg.begin) + "-" +
-                             std::to_string(seg.end - 1);
-    dl->AddText({origin.x + 30 * s, y}, IM_COL32(235, 238, 242, 255), text.c_str());
+    dl->AddText({origin.x + 30 * s, y}, IM_COL32(235, 238, 242, 255), legend_line(seg).c_str());
   }
 }
 
@@ -54,10 +76,12 @@ RgbaImage render(int width, int height, Color clear, const std::string& caption,
   for (int frame = 0; frame < kFrames; ++frame) {
     imgui.make_current();
     imgui.begin_frame(1.0 / 60.0);
+    const LegendPanel panel = legend_panel(imgui, caption, segmentation);
+    const float left = std::min(panel.right + 8.0f * imgui.scale(), 0.5f * static_cast<float>(width));
     renderer.begin_frame(clear);
-    paint_world(renderer, PixelViewport{0.0f, 0.0f, static_cast<float>(width), static_cast<float>(height)});
+    paint_world(renderer, PixelViewport{left, 0.0f, static_cast<float>(width) - left, static_cast<float>(height)});
     renderer.end_frame();
-    draw_legend(imgui, caption, segmentation);
+    draw_legend(imgui, panel, caption, segmentation);
     imgui.end_frame();
     context->present();
   }
