@@ -46,16 +46,19 @@ ModelSteps to_model_steps(const StepSequence& trajectory, double resample_step, 
   out.steps.state_dim = trajectory.state_dim;
   out.steps.action_dim = trajectory.action_dim;
   int begin = 0;
-  double path = phase;
+  double path = phase;  // counted toward the group's length: a phase shortens the first group
+  double walked = 0.0;  // path the group's actions actually cover, for their mean direction
   for (int t = 0; t < t_len; ++t) {
-    path += step_length(trajectory, t);
+    const double length = step_length(trajectory, t);
+    path += length;
+    walked += length;
     if (path >= resample_step) {
-      append_group(trajectory, begin, t + 1, path, out);
+      append_group(trajectory, begin, t + 1, walked, out);
       begin = t + 1;
-      path = 0.0;
+      path = walked = 0.0;
     }
   }
-  if (begin < t_len) append_group(trajectory, begin, t_len, path, out);
+  if (begin < t_len) append_group(trajectory, begin, t_len, walked, out);
   out.original_begin.push_back(t_len);
   return out;
 }

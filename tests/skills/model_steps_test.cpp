@@ -29,6 +29,7 @@ TEST(ModelSteps, APhaseShortensOnlyTheFirstGroup) {
   // 23 one-unit steps at 5 units per model step, read 2 units into the first group: 3, then 5s, then 0.
   const ModelSteps m = to_model_steps(straight(23, 1.0f), 5.0, 2.0);
   EXPECT_EQ(m.original_begin, (std::vector<int>{0, 3, 8, 13, 18, 23}));
+  EXPECT_FLOAT_EQ(m.steps.actions[0], 1.0f);  // still a unit direction: the phase is not path walked
   EXPECT_EQ(to_model_steps(straight(23, 1.0f), 5.0, 0.0).original_begin, (std::vector<int>{0, 5, 10, 15, 20, 23}));
 }
 

@@ -63,7 +63,7 @@ WritingRobustnessRow shipped_model_row(const std::string& condition, int phases 
 
 // The shipped writing model keeps its letters under the realistic learner's 5 px wobble read through a
 // mouse: the targets (F1 >= 0.92, letter->skill agreement >= 0.9), on 40 words of a seed used for
-// no choice (200 words at thirteen seeds measured 0.96-0.97 and 0.97-0.99: docs/skills.md). A retrained model
+// no choice (200 words at fourteen seeds measured 0.96-0.98 and 0.97-0.99: docs/skills.md). A retrained model
 // that loses them fails here.
 TEST(WritingRobustness, TheShippedModelMeetsTheFivePixelWobbleTargets) {
   const WritingRobustnessRow row = shipped_model_row("wobble 5 px");
@@ -72,8 +72,8 @@ TEST(WritingRobustness, TheShippedModelMeetsTheFivePixelWobbleTargets) {
 }
 
 // Letters by drawers no training saw (11-15) keep their boundaries and, mostly, their letter's skill: the
-// issue's targets are F1 and agreement >= 0.85; 200 words at thirteen seeds measured F1 0.89-0.93 and
-// agreement 0.86-0.91 (three readings; docs/skills.md), these 40 words 0.880 and 0.780 (109 letters, so the
+// issue's targets are F1 and agreement >= 0.85; 200 words at fourteen seeds measured F1 0.89-0.93 and
+// agreement 0.85-0.90 (three readings; docs/skills.md), these 40 words 0.877 and 0.771 (109 letters, so the
 // agreement bound sits below the measured spread). Every model before the copies by other hands agreed on 0.33-0.61 and
 // fails here.
 TEST(WritingRobustness, TheShippedModelKeepsUnseenDrawersLettersOnTheirSkills) {
@@ -83,8 +83,8 @@ TEST(WritingRobustness, TheShippedModelKeepsUnseenDrawersLettersOnTheirSkills) {
 }
 
 // The shipped model reads three phases of its resampling and votes (phase_vote.hpp). On 200 words at thirteen
-// seeds that raised the letter->skill agreement under 10 px wobble and on unseen drawers at every seed
-// (docs/skills.md, "Reading at three phases"); on these 40 words it must not lose to one reading either.
+// seeds that raised the letter->skill agreement on unseen drawers at every seed and under 10 px wobble at all
+// but one (docs/skills.md, "Reading at three phases"); on these 40 words it must not lose to one reading.
 TEST(WritingRobustness, TheShippedModelReadsThreePhasesAndKeepsMoreLettersOnTheirSkillsThanOneReading) {
   EXPECT_EQ(CompileModel::load(asset_dir() / "models" / "writing.pt", "writing").config().readout_phases, 3);
   for (const std::string condition : {"wobble 10 px", "unseen drawers 11-15"}) {
