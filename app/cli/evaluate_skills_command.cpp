@@ -132,21 +132,23 @@ std::pair<std::vector<Segmentation>, double> timed(Segment&& segment) {
   return {std::move(out), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()};
 }
 
-std::shared_ptr<const SkillExtractor> robustness_extractor(const EvaluateArgs& args) {
-  if (args.time_heuristic)
-    return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
-  return std::make_shared<CompileExtractor>(load_model(args));
+// The model run() loaded (null with --time-heuristic) as the extractor the tables segment with.
+std::shared_ptr<const SkillExtractor> evaluation_extractor(const EvaluateArgs& args,
+                                                           const std::shared_ptr<const CompileModel>& model) {
+  if (!model) return std::make_shared<TimeHeuristicExtractor>(CompileConfig::defaults_for(args.task).num_segments);
+  return std::make_shared<CompileExtractor>(model);
 }
 
 // The writing kit the planted and noise-floor tables diagnose with: the model's recorded noise floor, as the app.
-std::unique_ptr<WritingKit> evaluation_writing_kit(const EvaluateArgs& args) {
-  return make_writing_kit(robustness_extractor(args), args.time_heuristic ? "" : args.model);
+std::unique_ptr<WritingKit> evaluation_writing_kit(const EvaluateArgs& args,
+                                                   const std::shared_ptr<const CompileModel>& model) {
+  return make_writing_kit(evaluation_extractor(args, model), args.time_heuristic ? "" : args.model);
 }
 
 // The robustness table (writing): the model (or the time heuristic) on words by realistic learners.
-int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
+int print_robustness(const EvaluateArgs& args, const std::shared_ptr<const CompileModel>& model, std::uint64_t seed) {
   if (args.task != TaskKind::writing) throw InputError("--robustness", "only for --task writing");
-  const std::shared_ptr<const SkillExtractor> extractor = robustness_extractor(args);
+  const std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
   std::fprintf(stderr, "evaluate-skills: %d classic words (seed %llu) by realistic learners...\n", args.count,
                static_cast<unsigned long long>(seed));
   const auto t0 = std::chrono::steady_clock::now();
@@ -170,9 +172,10 @@ int print_robustness(const EvaluateArgs& args, std::uint64_t seed) {
 }
 
 // Planted weaknesses under realistic input (writing): Alg. 2 on the app's pre-test written by planted learners.
-int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
+int print_planted_weaknesses(const EvaluateArgs& args, const std::shared_ptr<const CompileModel>& model,
+                             std::uint64_t seed) {
   if (args.task != TaskKind::writing) throw InputError("--planted-weaknesses", "only for --task writing");
-  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args);
+  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args, model);
   const WritingKit& kit = *kit_owner;
   std::fprintf(stderr, "evaluate-skills: %d planted learners per letter and %d noise-only learners (seed %llu)...\n",
                args.learners, args.learners, static_cast<unsigned long long>(seed));
@@ -189,13 +192,13 @@ int print_planted_weaknesses(const EvaluateArgs& args, std::uint64_t seed) {
 }
 
 // Quality-aware expertise's noise floor (writing): the segment scores of the planted table's noise-only learners.
-int print_noise_floor(const EvaluateArgs& args, std::uint64_t seed) {
+int print_noise_floor(const EvaluateArgs& args, const std::shared_ptr<const CompileModel>& model, std::uint64_t seed) {
   if (args.task != TaskKind::writing)
     throw InputError("--noise-floor",
                      "only for --task writing here (parking: "
                      "evaluate-diagnosis --noise-floor)");
   if (args.record && args.time_heuristic) throw InputError("--record", "needs a model file (--model)");
-  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args);
+  const std::unique_ptr<WritingKit> kit_owner = evaluation_writing_kit(args, model);
   const WritingKit& kit = *kit_owner;
   std::fprintf(stderr, "evaluate-skills: %d noise-only learners (seed %llu)...\n", args.learners,
                static_cast<unsigned long long>(seed));
@@ -223,9 +226,9 @@ int run(const EvaluateArgs& args) {
     if (seed == model->config().seed)
       throw InputError("--seed", std::to_string(seed) + " is the seed the model was trained with; pick another");
   }
-  if (args.robustness) return print_robustness(args, seed);
-  if (args.planted) return print_planted_weaknesses(args, seed);
-  if (args.noise_floor) return print_noise_floor(args, seed);
+  if (args.robustness) return print_robustness(args, model, seed);
+  if (args.planted) return print_planted_weaknesses(args, model, seed);
+  if (args.noise_floor) return print_noise_floor(args, model, seed);
   std::fprintf(stderr, "evaluate-skills: generating %d %s demonstrations (seed %llu)...\n", args.count,
                std::string(to_string(args.task)).c_str(), static_cast<unsigned long long>(seed));
   const SkillDataSet data = generate_task_demos(args.task, args.count, seed);
@@ -248,11 +251,9 @@ int run(const EvaluateArgs& args) {
     if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
-    std::optional<CompileExtractor> compile;
-    if (model) compile.emplace(model);
-    const SkillExtractor& extractor = compile ? static_cast<const SkillExtractor&>(*compile) : heuristic;
-    report["realistic_drivers"] = realistic_driver_rows(extractor, drives, seed);
-    report["keyed_actions_on_clean_motion"] = keyed_action_row(extractor, drives);
+    const std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
+    report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
+    report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
   }
   std::printf("%s\n", report.dump(1).c_str());
   return 0;
