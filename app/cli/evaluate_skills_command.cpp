@@ -10,10 +10,11 @@
 // --noise-floor calibrates quality-aware expertise's noise floor on the noise-only learners
 // (execution_noise_floor.hpp).
 // --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
-// drives' (docs/skills.md, "Robustness on realistic learners"). --readout-phases P reads the model at P phases
-// of its resampling instead of the file's number (phase_vote.hpp), for every table.
+// drives' (docs/skills.md, "Robustness on realistic learners"), open loop and following the path. --readout-phases P
+// reads the model at P phases of its resampling instead of the file's number (phase_vote.hpp), for every table.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -29,6 +30,7 @@
 #include "engine/writing/word_generator.hpp"
 #include "teaching/expertise/execution_expertise.hpp"
 #include "teaching/learners/parking/drive_skill_agreement.hpp"
+#include "teaching/learners/parking/path_follower.hpp"
 #include "teaching/skills/compile_config.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/compile_model.hpp"
@@ -86,8 +88,10 @@ std::vector<ParkingTrial> held_out_drives(int count, std::uint64_t seed) {
 
 Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<ParkingTrial>& drives,
                            std::uint64_t seed) {
+  std::vector<DriveCondition> conditions = standard_drive_conditions();
+  for (DriveCondition& c : path_following_conditions()) conditions.push_back(std::move(c));  // appended: same draws
   Json rows = Json::array();
-  for (const AgreementRow& r : measure_drive_agreement(extractor, drives, standard_drive_conditions(), seed)) {
+  for (const AgreementRow& r : measure_drive_agreement(extractor, drives, conditions, seed)) {
     rows.push_back({{"condition", r.condition},
                     {"drives", r.drives},
                     {"steps", r.agreement.steps},
@@ -95,17 +99,26 @@ Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<Pa
                     {"skill_presence", r.presence.share()},
                     {"still_parked", r.successes}});
     std::fprintf(stderr,
-                 "  %-48s agreement %5.1f %%  skills present %5.1f %%  (%d steps, %d of %d drives still parked)\n",
+                 "  %-64s agreement %5.1f %%  skills present %5.1f %%  (%d steps, %d of %d drives still parked)\n",
                  r.condition.c_str(), 100.0 * r.agreement.share(), 100.0 * r.presence.share(), r.agreement.steps,
                  r.successes, r.drives);
   }
   return rows;
 }
 
+// How much room a driver has to correct: the expert's steps at the pedal's or the steering's limit.
+Json limits_row(const std::vector<ParkingTrial>& drives) {
+  const ActuatorLimits l = actions_at_limits(drives);
+  const double n = std::max(l.steps, 1);
+  std::fprintf(stderr, "  the expert's drives: pedal at its limit on %.1f %% of %d steps, steering on %.1f %%\n",
+               100.0 * l.pedal / n, l.steps, 100.0 * l.steering / n);
+  return {{"steps", l.steps}, {"pedal", l.pedal / n}, {"steering", l.steering / n}};
+}
+
 // The same drives with keyboard keys for actions on the clean motion (keyed_action_agreement).
 double keyed_action_row(const SkillExtractor& extractor, const std::vector<ParkingTrial>& drives) {
   const StepAgreement a = keyed_action_agreement(extractor, drives);
-  std::fprintf(stderr, "  %-48s agreement %5.1f %%  (%d steps)\n", "keyboard keys on the clean motion",
+  std::fprintf(stderr, "  %-64s agreement %5.1f %%  (%d steps)\n", "keyboard keys on the clean motion",
                100.0 * a.share(), a.steps);
   return a.share();
 }
@@ -254,6 +267,7 @@ int run(const EvaluateArgs& args) {
     const std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
     report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
+    report["expert_actions_at_limits"] = limits_row(drives);
   }
   std::printf("%s\n", report.dump(1).c_str());
   return 0;

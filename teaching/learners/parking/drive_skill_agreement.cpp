@@ -59,6 +59,17 @@ std::vector<DriveCondition> standard_drive_conditions() {
   };
 }
 
+std::vector<DriveCondition> path_following_conditions() {
+  std::vector<DriveCondition> out;
+  for (DriveCondition c : standard_drive_conditions()) {
+    if (c.profile.stick_noise == 0.0 && c.profile.device != DriveDevice::Keyboard) continue;  // nothing to correct
+    c.name += ", follows the path";
+    c.profile.follows_path = true;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
                                                   const std::vector<ParkingTrial>& expert_drives,
                                                   const std::vector<DriveCondition>& conditions, std::uint64_t seed) {

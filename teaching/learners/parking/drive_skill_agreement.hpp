@@ -41,6 +41,10 @@ struct DriveCondition {
 };
 // The table's rows: 15 Hz input alone, stick noise, delay, each device, a harder novice, 5 Hz input.
 std::vector<DriveCondition> standard_drive_conditions();
+// The same drivers watching the expert's path and correcting their drift (follows_path), for every standard
+// condition but the noiseless gamepad: the motion stays near the expert's, so the rows measure how the model
+// reads noisy, delayed and keyed input on the expert's motion rather than a drive that went elsewhere.
+std::vector<DriveCondition> path_following_conditions();
 
 struct AgreementRow {
   std::string condition;

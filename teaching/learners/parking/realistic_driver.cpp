@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "engine/core/error.hpp"
 #include "engine/input/gamepad_mapping.hpp"
 #include "engine/input/keyboard_drive.hpp"
 #include "engine/input/stick_geometry.hpp"
 #include "engine/input/virtual_joystick.hpp"
+#include "teaching/learners/parking/path_follower.hpp"
 
 namespace sc {
 namespace {
@@ -152,15 +154,27 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   wander.start(rng);
   int braking_run = 0;  // input samples since the current expert braking run began
   std::array<ParkingAction, parking::kSubstepsPerAction> sub{};
+  const std::optional<PathFollower> follower =
+      p.follows_path ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
+  const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
+  std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
   for (int k = 0; k < expert_samples + delay && !sim.done(); k += per_step) {
     double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
+    VehicleState car = sim.vehicle();
     for (int s = 0; s < per_step; ++s) {
       const int source = k + s - delay;  // the expert's input sample the driver is reproducing
+      seen.push_back(car);
       ParkingAction intent{0.0, 0.0};
       if (source >= 0 && source < expert_samples) {
         const std::size_t step = static_cast<std::size_t>(source / per_step);
         intent = clip_action(expert.actions[step]);
         braking_run = !braking.empty() && braking[step] ? braking_run + 1 : 0;
+        if (follower) {
+          // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
+          const ParkingAction d =
+              follower->correction(seen[static_cast<std::size_t>(source)], (source - delay) * substeps_per_sample);
+          intent = clip_action({intent[0] + d[0], intent[1] + d[1]});
+        }
         if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;
       }
       ParkingAction u = through_device(p.device, intent, wander.next(rng));
@@ -170,6 +184,9 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         u[0] = std::max(u[0], -std::max(speed, 0.0) / (parking::kMaxAcceleration / p.control_hz));
       }
       speed += clip_action(u)[0] * parking::kMaxAcceleration / p.control_hz;
+      const ParkingAction held = clip_action(u);
+      for (int h = 0; h < substeps_per_sample; ++h)
+        car = bicycle_substep(car, acceleration_of(held), steering_of(held));
       sub[static_cast<std::size_t>(s)] = u;
       out.actions.push_back(u);
     }

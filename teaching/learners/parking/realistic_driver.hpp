@@ -3,8 +3,11 @@
 // that skill models, diagnoses and tests meet the input real learners give (the diagnosis must hold on
 // novice learners, not only on near-perfect copies of the expert).
 //
-// Spec. The driver follows the expert's control-rate actions open loop (no re-planning), with
+// Spec. The driver follows the expert's control-rate actions, open loop (no correction, the default) or
+// watching the path (`follows_path`: the expert's action plus path_follower.hpp's correction), with
 //  * a reaction delay: at time t it does what the expert did at t - delay (neutral before the start);
+//    a driver who follows the path also corrects what it saw at t - delay: the correction for the car's
+//    state then, against where the expert was at t - 2 delay (what it would have decided at t - delay);
 //  * stick noise: a slow wander on each axis (first-order autoregressive, time constant
 //    `noise_time_constant_s`, standard deviation `stick_noise` in action units) on top of the intent;
 //  * the device between intent and action, with the app's own mappings (engine/input/):
@@ -15,7 +18,8 @@
 //                 {-0.7, 0, +0.7} (KeyboardDrive::kKeyAction): the quantisation of a keyboard;
 //  * the input rate: control_hz 15 records one action per 1/15 s sub-step (the app's "responsive" mode,
 //    the recorded trial has control_hz 15), control_hz 5 one per 0.2 s control step;
-//  * optionally a planted deficit (PlantedDeficit), applied last, to the action the car receives.
+//  * optionally a planted deficit (PlantedDeficit), applied last, to the action the car receives; a late
+//    braker's coasted samples get no correction of the pedal either.
 // The drive lasts the expert's steps plus the delay, and stops early at success, collision or the horizon.
 // Deterministic in the Rng given.
 #include <cstdint>
@@ -50,6 +54,7 @@ struct RealisticDriverProfile {
   double noise_time_constant_s = 0.3;  // wander correlation time
   double reaction_delay_s = 0.2;       // >= 0
   PlantedDeficit deficit = PlantedDeficit::None;
+  bool follows_path = false;  // closes the loop on the expert's path (path_follower.hpp); draws no numbers
 };
 
 // A novice on `device` at 15 Hz: stick noise uniform in [0.05, 0.2], delay uniform in [0.1, 0.3] s (human

@@ -50,6 +50,17 @@ TEST(DriveSkillAgreement, StandardConditionsCoverEveryDeviceAndBothRates) {
   EXPECT_TRUE(five_hz && fifteen_hz);
 }
 
+TEST(DriveSkillAgreement, PathFollowingConditionsAreTheNoisyOrKeyedStandardOnesWithTheLoopClosed) {
+  const std::vector<DriveCondition> standard = standard_drive_conditions(), following = path_following_conditions();
+  EXPECT_EQ(following.size(), standard.size() - 1);  // all but the noiseless gamepad
+  for (const DriveCondition& c : following) {
+    EXPECT_TRUE(c.profile.follows_path) << c.name;
+    EXPECT_TRUE(c.profile.stick_noise > 0.0 || c.profile.device == DriveDevice::Keyboard) << c.name;
+    EXPECT_NE(c.name.find(", follows the path"), std::string::npos) << c.name;
+  }
+  for (const DriveCondition& c : standard) EXPECT_FALSE(c.profile.follows_path) << c.name;
+}
+
 // Labels each step by the sign of its steering action (left, straight, right): a model that reads actions.
 class SteeringSignExtractor final : public SkillExtractor {
  public:
