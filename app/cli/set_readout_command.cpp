@@ -32,15 +32,16 @@ int run(const SetReadoutArgs& args) {
   const std::filesystem::path sidecar_path = model_sidecar_path(args.model);
   Json sidecar = read_json_file(sidecar_path);
   if (!sidecar.is_object()) throw InputError(sidecar_path.string(), "not a JSON object");
+  // One write of each file: the sidecar keeps its record (metrics, noise floor, ...) with the new config.
   ModelProvenance provenance;
   if (sidecar.contains("data") && sidecar["data"].is_string()) provenance.data_description = sidecar["data"];
   if (sidecar.contains("git_revision") && sidecar["git_revision"].is_string())
     provenance.git_revision = sidecar["git_revision"];
+  if (sidecar.contains("metrics") && sidecar["metrics"].is_object()) provenance.metrics = sidecar["metrics"];
+  provenance.extra = sidecar;
   model.save(args.model, provenance);
-  sidecar["config"] = to_json(model.config());  // everything else (metrics, noise floor) stays as it was
-  write_json_file(sidecar_path, sidecar);
   std::printf("%s: reads %d phase%s (was %d)\n", args.model.c_str(), args.phases, args.phases == 1 ? "" : "s", before);
-  if (sidecar.contains("execution_noise_floor"))
+  if (before != args.phases && sidecar.contains("execution_noise_floor"))
     std::printf(
         "its recorded noise floor was calibrated with the old reading: recalibrate it with\n"
         "  skillcoach evaluate-skills --task %s --model %s --noise-floor --learners 200 --seed 0 --record\n",

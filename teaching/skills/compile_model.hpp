@@ -19,6 +19,9 @@ struct ModelProvenance {
   std::string data_description;   // e.g. "1000 expert rollouts on random classic scenarios"
   std::string git_revision;       // empty when unknown
   Json metrics = Json::object();  // final metrics (e.g. from TrainingSummary)
+  // Further sidecar entries written as given, e.g. a recorded noise floor kept when a model is re-saved
+  // (set-readout); the fields above and the config take precedence over entries of the same name.
+  Json extra = Json::object();
 };
 
 class CompileModel {

@@ -160,16 +160,17 @@ void CompileModel::save(const std::filesystem::path& file, const ModelProvenance
     contents.tensors.push_back(std::move(nt));
   }
   write_model_file(file, contents);
-  Json sidecar{{"format", kFormatName},
-               {"format_version", kModelFormatVersion},
-               {"model_file", file.filename().string()},
-               {"task", config().task},
-               {"config", to_json(config())},
-               {"seed", config().seed},
-               {"parameters", parameter_count()},
-               {"data", provenance.data_description},
-               {"metrics", provenance.metrics},
-               {"git_revision", provenance.git_revision}};
+  Json sidecar = provenance.extra.is_object() ? provenance.extra : Json::object();
+  sidecar.update(Json{{"format", kFormatName},
+                      {"format_version", kModelFormatVersion},
+                      {"model_file", file.filename().string()},
+                      {"task", config().task},
+                      {"config", to_json(config())},
+                      {"seed", config().seed},
+                      {"parameters", parameter_count()},
+                      {"data", provenance.data_description},
+                      {"metrics", provenance.metrics},
+                      {"git_revision", provenance.git_revision}});
   write_json_file(model_sidecar_path(file), sidecar);
 }
 

@@ -94,6 +94,19 @@ TEST(CompileModel, RoundTripGivesIdenticalSegmentationAndSidecar) {
   EXPECT_THROW(loaded.extract(wrong), InputError);
 }
 
+TEST(CompileModel, ASidecarsFurtherEntriesAreWrittenButNeverOverrideItsOwnFields) {
+  const CompileModel model = CompileModel::load(trained_model());
+  ModelProvenance prov;
+  prov.data_description = "kept";
+  prov.extra = Json{{"execution_noise_floor", {{"value", -0.5}}}, {"task", "writing"}, {"data", "stale"}};
+  const auto path = model_scratch("extra.scm");
+  model.save(path, prov);
+  const Json sidecar = read_json_file(model_sidecar_path(path));
+  EXPECT_EQ(sidecar.at("execution_noise_floor").at("value"), -0.5);
+  EXPECT_EQ(sidecar.at("task"), "parking");
+  EXPECT_EQ(sidecar.at("data"), "kept");
+}
+
 TEST(CompileModel, AResamplingModelReadsAtItsPhasesAndKeepsTheSettingInItsFile) {
   CompileConfig c = CompileConfig::writing_defaults();  // action mode, resampled, 3 phases
   c.hidden = 16;
