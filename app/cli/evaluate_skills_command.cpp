@@ -221,7 +221,9 @@ int print_noise_floor(const EvaluateArgs& args, const std::shared_ptr<const Comp
               noise_floor_report(calibration, kit.execution_noise_floor()).c_str());
   if (args.record) {
     record_noise_floor(args.model, calibration, seed);
-    std::printf("recorded %.3f in %s\n", calibration.floor(), model_sidecar_path(args.model).string().c_str());
+    const NoiseFloor f = calibration.noise_floor();
+    std::printf("recorded %.3f (repeated twice %.3f, 3 or more %.3f) in %s\n", f.segment, f.repeated_twice.value_or(0.0),
+                f.repeated_more.value_or(0.0), model_sidecar_path(args.model).string().c_str());
   }
   return 0;
 }

@@ -132,11 +132,29 @@ double median_of(std::vector<double> values) {
   return *middle;
 }
 
+// The skills done worse than noise makes in every way a repetition can show (the header's repeated
+// evidence): skill -> the repeated floor its segments are charged beyond.
+std::map<int, double> repeatedly_worse(const std::vector<ExecutionTrial>& trials, const NoiseFloor& floor) {
+  std::map<int, std::vector<double>> by_skill;
+  for (const ExecutionTrial& t : trials)
+    for (std::size_t k = 0; k < t.segments.size(); ++k)
+      by_skill[t.trial.expert.segments[k].skill].push_back(t.segments[k].reward);
+  std::map<int, double> out;
+  for (const auto& [skill, rewards] : by_skill) {
+    const std::optional<double> f = rewards.size() == 2               ? floor.repeated_twice
+                                    : rewards.size() >= kRepeatedMore ? floor.repeated_more
+                                                                      : std::nullopt;
+    if (f && median_score(rewards) < *f) out[skill] = *f;
+  }
+  return out;
+}
+
 // Each segment's reward relative to the learner's usual spread: only the part below the outlier cut
 // (median - kOutlierCut robust standard deviations) and the noise floor counts, so what stands out from how
 // this learner does everything else, and from what noise does, is charged, and the ordinary scatter of a
-// hand or a device is not.
-std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials, std::optional<double> floor) {
+// hand or a device is not. A skill done repeatedly worse than noise makes is charged beyond its repeated floor.
+std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials,
+                                                const std::optional<NoiseFloor>& floor, bool in_experts_hand) {
   std::vector<double> rewards;
   for (const ExecutionTrial& t : trials)
     for (const SegmentExecution& s : t.segments) rewards.push_back(s.reward);
@@ -145,20 +163,33 @@ std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> tria
   std::vector<double> deviations;
   for (double r : rewards) deviations.push_back(std::abs(r - median));
   const double spread = kMadToStandardDeviation * median_of(deviations);
-  const double cut = std::min(median - kOutlierCut * spread, floor.value_or(0.0));
+  const double cut = std::min(median - kOutlierCut * spread, floor ? floor->segment : 0.0);
+  const std::map<int, double> repeated =
+      floor && in_experts_hand ? repeatedly_worse(trials, *floor) : std::map<int, double>{};
   for (ExecutionTrial& t : trials)
-    for (SegmentExecution& s : t.segments) s.reward = std::min(0.0, s.reward - cut);
+    for (std::size_t k = 0; k < t.segments.size(); ++k) {
+      const auto it = repeated.find(t.trial.expert.segments[k].skill);
+      const double skill_cut = it == repeated.end() ? cut : std::max(cut, it->second);
+      t.segments[k].reward = std::min(0.0, t.segments[k].reward - skill_cut);
+    }
   return trials;
 }
 
-Waivers missing_waivers(const std::vector<ExecutionTrial>& trials, ExpertiseMode mode, std::optional<double> floor) {
+Waivers missing_waivers(const std::vector<ExecutionTrial>& trials, ExpertiseMode mode,
+                        const std::optional<NoiseFloor>& floor) {
   Waivers out;
   for (const ExecutionTrial& t : trials) {
     out.emplace_back(t.segments.size(), false);
     if (mode != ExpertiseMode::QualityAware || !floor) continue;
-    for (std::size_t k = 0; k < t.segments.size(); ++k) out.back()[k] = t.segments[k].reward >= *floor;
+    for (std::size_t k = 0; k < t.segments.size(); ++k) out.back()[k] = t.segments[k].reward >= floor->segment;
   }
   return out;
+}
+
+void check_floor(const NoiseFloor& f) {
+  for (const std::optional<double> v : {std::optional<double>(f.segment), f.repeated_twice, f.repeated_more})
+    if (v && !(std::isfinite(*v) && *v <= 0.0))
+      throw InputError("quality-aware expertise", "noise floor " + std::to_string(*v) + " must be <= 0");
 }
 
 // Takes back Alg. 2's penalties the waivers cancel. E_m is summed again from the penalties kept, in Alg. 2's
@@ -190,6 +221,13 @@ const std::string& expertise_mode_name(ExpertiseMode mode) {
   throw std::logic_error("expertise mode without a name");
 }
 
+double median_score(std::vector<double> scores) {
+  if (scores.empty()) throw InputError("quality-aware expertise", "no scores to take a median of");
+  std::sort(scores.begin(), scores.end());
+  const std::size_t n = scores.size();
+  return n % 2 == 1 ? scores[n / 2] : 0.5 * (scores[n / 2 - 1] + scores[n / 2]);
+}
+
 const char* target_reason_words(TargetReason reason) {
   switch (reason) {
     case TargetReason::Missing:
@@ -204,15 +242,14 @@ const char* target_reason_words(TargetReason reason) {
 
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& given_trials, int num_skills,
                                                 int num_targets, ExpertiseMode mode,
-                                                std::optional<double> noise_floor) {
+                                                const std::optional<NoiseFloor>& noise_floor) {
   const std::size_t references = reference_count(given_trials);
   for (std::size_t t = 0; t < given_trials.size(); ++t) check(given_trials[t], t, references);
-  if (noise_floor && !(std::isfinite(*noise_floor) && *noise_floor <= 0.0))
-    throw InputError("quality-aware expertise", "noise floor " + std::to_string(*noise_floor) + " must be <= 0");
+  if (noise_floor) check_floor(*noise_floor);
   ExecutionExpertise out;
   if (mode == ExpertiseMode::QualityAware) out.learner_hands = learners_hands(given_trials, references);
   const std::vector<ExecutionTrial> given = in_learners_hand(given_trials, out.learner_hands);
-  const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor);
+  const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor, out.learner_hands.empty());
   const Waivers waived = missing_waivers(given, mode, noise_floor);
   std::vector<ExpertiseTrial> plain;
   for (const ExecutionTrial& t : given) plain.push_back(t.trial);

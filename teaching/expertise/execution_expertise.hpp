@@ -21,6 +21,14 @@
 // Alg. 2's "missing": a skill the segmentation missed in a trial although the learner's aligned part
 // scores at or above f is not charged - the learner did it as well as noise allows, the segmenter missed it.
 // Without a floor (nullopt) both rules are as without it: the outlier cut alone, every "missing" charged.
+// Why repeated evidence: a letter written in another shape every time can stay within what noise does to
+// one segment each time, but noise does not spoil the same skill in every segment. So a skill whose median
+// score over its segments of the pre-test (the mean of two for two) falls below the floor for medians of
+// that many segments (NoiseFloor::repeated_twice / repeated_more, the same percentile of noise-only
+// learners' medians) is charged beyond that floor instead, in each of its segments. Only for a learner who
+// writes in the expert's hand (no learner's hand taken, below): one whose letters follow a hand of its own
+// writes some of them unlike the guide every time by style, not by fault (docs/skills.md, "Repeated
+// evidence").
 //
 // Why the learner's hand: a task may give other right ways of doing the expert's trial (execution_reference.hpp;
 // writing: the word in other drawers' hands). The reference whose scores have the highest mean over all of
@@ -53,6 +61,20 @@ inline constexpr double kMadToStandardDeviation = 1.4826;
 // of them) found three more planted letters at one design seed of two and none at the other (docs/skills.md,
 // "The learner's own hand as the yardstick"); one hand waives less.
 inline constexpr int kLearnerHands = 1;
+
+// What realistic noise alone does to the execution score, calibrated per task and model
+// (teaching/tasks/execution_noise_floor.hpp). A floor of one number is the segment floor alone.
+struct NoiseFloor {
+  NoiseFloor(double segment_floor = 0.0) : segment(segment_floor) {}  // NOLINT: a floor is a number first
+  double segment;                                                     // f: one segment's score
+  std::optional<double> repeated_twice;  // a skill's mean score over its 2 segments of a pre-test
+  std::optional<double> repeated_more;   // a skill's median score over its 3 or more segments
+};
+// Skills with this many segments in a pre-test or more take NoiseFloor::repeated_more.
+inline constexpr int kRepeatedMore = 3;
+// The median of a skill's scores as the repeated floors are calibrated and applied: the mean of the middle
+// two for an even count. Throws InputError for no scores.
+double median_score(std::vector<double> scores);
 
 enum class ExpertiseMode {
   Alg2,          // the paper's Alg. 2 exactly (research mode)
@@ -102,11 +124,11 @@ struct ExecutionExpertise {
 };
 
 // mode Alg2: estimate_expertise exactly (why from its penalties; noise_floor unused); QualityAware: the
-// formula above, with the learner's hand and the noise floor's two rules when one is given (<= 0). Throws
-// InputError as estimate_expertise does, and for segments not parallel to the expert's, q > 0, a floor > 0
-// or segments with different numbers of reference scores.
+// formula above, with the learner's hand, the noise floor's two rules and repeated evidence when a floor is
+// given (every value <= 0). Throws InputError as estimate_expertise does, and for segments not parallel to the
+// expert's, q > 0, a floor > 0 or segments with different numbers of reference scores.
 ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial>& trials, int num_skills,
                                                 int num_targets, ExpertiseMode mode,
-                                                std::optional<double> noise_floor = std::nullopt);
+                                                const std::optional<NoiseFloor>& noise_floor = std::nullopt);
 
 }  // namespace sc

@@ -85,7 +85,7 @@ class TaskKit {
   // What realistic noise alone does to execution_reward on this task with this kit's model (a low percentile
   // of noise-only learners' segment scores, docs/skills.md), for quality-aware expertise's noise-floor rules;
   // nullopt where those rules measured worse (parking) - then the outlier cut alone decides.
-  virtual std::optional<double> execution_noise_floor() const = 0;
+  virtual std::optional<NoiseFloor> execution_noise_floor() const = 0;
   // The expertise estimate the trainer diagnoses learners with: the one that measured better on this task's
   // planted weaknesses (docs/skills.md). Research conditions and `diagnose --expertise` may choose either.
   virtual ExpertiseMode learners_expertise() const = 0;

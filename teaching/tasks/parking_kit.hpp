@@ -25,7 +25,7 @@ struct ParkingKitOptions {
   // never-reversing and weak-steering learners' deficits were hidden, since a deficit's segments mostly score
   // within what noise does (docs/skills.md, "Quality-aware expertise"); `evaluate-diagnosis
   // --apply-noise-floor` measures it.
-  std::optional<double> execution_noise_floor;
+  std::optional<NoiseFloor> execution_noise_floor;
 };
 
 // asset_dir()/experts/parking_pool.json, or parking_pool_study_corner.json for the study corner.
@@ -70,7 +70,7 @@ class ParkingKit final : public TaskKit {
   // each seen from where its part starts (parking_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
   // ParkingKitOptions::execution_noise_floor (none with the ready-pool constructor).
-  std::optional<double> execution_noise_floor() const override { return noise_floor_; }
+  std::optional<NoiseFloor> execution_noise_floor() const override { return noise_floor_; }
   // Alg. 2: quality-aware expertise also left most weak-steering learners quiet (docs/skills.md).
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::Alg2; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
@@ -91,7 +91,7 @@ class ParkingKit final : public TaskKit {
   std::string extractor_notice_;
   std::string pool_notice_;
   GoalRegion region_ = GoalRegion::WholeLot;
-  std::optional<double> noise_floor_;
+  std::optional<NoiseFloor> noise_floor_;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

@@ -37,7 +37,7 @@ ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::pat
 }  // namespace
 
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
-                                          std::optional<double> execution_noise_floor) {
+                                          std::optional<NoiseFloor> execution_noise_floor) {
   ChosenExtractor chosen = choose_skill_extractor(TaskKind::parking, model);
   return std::make_unique<ParkingKit>(
       chosen.extractor, chosen.notice,

@@ -28,7 +28,7 @@ struct WritingKitOptions {
   std::uint64_t seed = 0;
   // Quality-aware expertise's noise floor: the one recorded with the extractor's model
   // (writing_noise_floor.hpp); none for a model without one or the time heuristic.
-  std::optional<double> execution_noise_floor;
+  std::optional<NoiseFloor> execution_noise_floor;
 };
 
 // Distinct words drawn from the alphabet's generator with Rng(seed) (classic: generate_classic_words
@@ -66,7 +66,7 @@ class WritingKit final : public TaskKit {
   // aligned pen points (writing_execution.hpp).
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
   // WritingKitOptions::execution_noise_floor: calibrated with the kit's model (writing_noise_floor.hpp).
-  std::optional<double> execution_noise_floor() const override { return options_.execution_noise_floor; }
+  std::optional<NoiseFloor> execution_noise_floor() const override { return options_.execution_noise_floor; }
   // Quality-aware: it finds the letter a learner writes badly for 89-99 of 100 planted learners, Alg. 2 for
   // 57-60, because a badly written letter is usually still segmented as that letter (docs/skills.md).
   ExpertiseMode learners_expertise() const override { return ExpertiseMode::QualityAware; }

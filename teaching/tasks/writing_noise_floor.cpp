@@ -21,15 +21,21 @@ NoiseFloorCalibration calibrate_writing_noise_floor(const WritingKit& kit, int l
   return calibrate_noise_floor(kit, trials);
 }
 
-std::optional<double> recorded_noise_floor(const std::filesystem::path& model) {
+std::optional<NoiseFloor> recorded_noise_floor(const std::filesystem::path& model) {
   const std::filesystem::path sidecar = model_sidecar_path(model);
   if (!std::filesystem::exists(sidecar)) return std::nullopt;
   const Json doc = read_json_file(sidecar);
   if (!doc.is_object() || !doc.contains(kField)) return std::nullopt;
   const Json& floor = doc[kField];
-  if (!floor.is_object() || !floor.contains("value") || !floor["value"].is_number())
-    throw InputError(sidecar.string(), std::string("$.") + kField + ".value is not a number");
-  return floor["value"].get<double>();
+  const auto number = [&](const char* key) {
+    if (!floor.is_object() || !floor.contains(key) || !floor[key].is_number())
+      throw InputError(sidecar.string(), std::string("$.") + kField + "." + key + " is not a number");
+    return floor[key].get<double>();
+  };
+  NoiseFloor out(number("value"));
+  if (floor.contains("repeated_twice")) out.repeated_twice = number("repeated_twice");
+  if (floor.contains("repeated_more")) out.repeated_more = number("repeated_more");
+  return out;
 }
 
 void record_noise_floor(const std::filesystem::path& model, const NoiseFloorCalibration& calibration,
@@ -39,11 +45,17 @@ void record_noise_floor(const std::filesystem::path& model, const NoiseFloorCali
     throw InputError(sidecar.string(), "missing: no sidecar to record the floor in");
   Json doc = read_json_file(sidecar);
   if (!doc.is_object()) throw InputError(sidecar.string(), "not a JSON object");
-  doc[kField] = Json{{"value", calibration.floor()},
-                     {"percentile", kNoiseFloorPercentile},
-                     {"learners", calibration.learners},
-                     {"seed", seed},
-                     {"segments", calibration.scores.size()}};
+  const NoiseFloor floor = calibration.noise_floor();
+  Json record{{"value", floor.segment},
+              {"percentile", kNoiseFloorPercentile},
+              {"learners", calibration.learners},
+              {"seed", seed},
+              {"segments", calibration.scores.size()},
+              {"skills_twice", calibration.skill_twice.size()},
+              {"skills_more", calibration.skill_more.size()}};
+  if (floor.repeated_twice) record["repeated_twice"] = *floor.repeated_twice;
+  if (floor.repeated_more) record["repeated_more"] = *floor.repeated_more;
+  doc[kField] = std::move(record);
   write_json_file(sidecar, doc);
 }
 

@@ -8,8 +8,10 @@
 //
 // Spec: the calibration uses the planted table's noise-only learners (noise_only_learner) writing the kit's
 // pre-test, kNoiseFloorLearners of them at kNoiseFloorSeed, which no table is reported at. The sidecar holds
-// "execution_noise_floor": {"value": f, "percentile": p, "learners": n, "seed": s, "segments": k}. A model
-// without it (or the time heuristic) has no floor: quality-aware expertise then charges by the learner's own
+// "execution_noise_floor": {"value": f, "percentile": p, "learners": n, "seed": s, "segments": k,
+// "repeated_twice": f2, "repeated_more": f3, "skills_twice": n2, "skills_more": n3}; the repeated floors
+// (since 2026-12-05) are absent in older records, which then charge no repeated evidence. A model without a
+// record (or the time heuristic) has no floor: quality-aware expertise then charges by the learner's own
 // outlier cut alone.
 #include <cstdint>
 #include <filesystem>
@@ -27,8 +29,8 @@ inline constexpr std::uint64_t kNoiseFloorSeed = 0;
 NoiseFloorCalibration calibrate_writing_noise_floor(const WritingKit& kit, int learners, std::uint64_t seed);
 
 // The floor recorded in `model`'s sidecar; nullopt when there is no sidecar or it records none. Throws
-// InputError naming the sidecar when it is not JSON or its floor is not a number.
-std::optional<double> recorded_noise_floor(const std::filesystem::path& model);
+// InputError naming the sidecar when it is not JSON or a floor it records is not a number.
+std::optional<NoiseFloor> recorded_noise_floor(const std::filesystem::path& model);
 
 // Adds (or replaces) the floor in `model`'s sidecar, keeping everything else. Throws InputError when the
 // sidecar is missing or unreadable, or cannot be written.

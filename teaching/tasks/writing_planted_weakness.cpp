@@ -96,7 +96,7 @@ StepSequence letter_points(const ClassicDrawerGlyphs& glyphs, char letter, int d
 // The other-drawer learners split by how far their letter's shape is from the expert's, then each pair.
 std::string other_drawer_lines(const PlantedWeaknessReport& report) {
   if (report.other_drawers.empty()) return {};
-  const double cut = report.noise_floor.value_or(0.0);
+  const double cut = report.noise_floor ? report.noise_floor->segment : 0.0;
   int n[2] = {0, 0}, found[2] = {0, 0}, pairs[2] = {0, 0};
   for (const auto& [key, cell] : report.other_drawers) {
     const int within = cell.shape_score > cut ? 1 : 0;

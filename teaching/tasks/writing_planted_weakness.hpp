@@ -93,7 +93,7 @@ struct PlantedWeaknessReport {
   std::map<int, int> noise_top_targets;        // skill -> noise-only learners with it as first target
   // Other-drawer learners by letter and the drawer whose shape they write.
   std::map<std::pair<char, int>, OtherDrawerCell> other_drawers;
-  std::optional<double> noise_floor;  // the kit's (WritingKit::execution_noise_floor); splits other_drawers
+  std::optional<NoiseFloor> noise_floor;  // the kit's (WritingKit::execution_noise_floor); splits other_drawers
 };
 
 // `mode`: the expertise estimate the diagnosis uses (Alg. 2, the app's default, or quality-aware); the

@@ -215,6 +215,76 @@ TEST(ExecutionExpertise, AHandIsMoreThanOneSkillSoOneLetterInAnotherShapeCannotW
   EXPECT_EQ(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware).learner_hands, std::vector<int>{0});
 }
 
+// `n` trials of a tidy learner, skills 0, 1, 2 all shown; skill 1 scores `skill1[t]` in trial t, the rest about 0.
+std::vector<ExecutionTrial> repeated_trials(const std::vector<double>& skill1) {
+  std::vector<ExecutionTrial> out;
+  for (std::size_t t = 0; t < skill1.size(); ++t) {
+    ExecutionTrial et = trial();
+    et.trial.student = et.trial.expert;
+    const double scatter = 0.01 * static_cast<double>(t);
+    et.segments = {{-0.01 - scatter, 0, 10}, {skill1[t], 10, 20}, {-0.02 - scatter, 20, 30}};
+    out.push_back(et);
+  }
+  return out;
+}
+
+NoiseFloor with_repeated(double twice, double more) {
+  NoiseFloor f(-0.5);
+  f.repeated_twice = twice;
+  f.repeated_more = more;
+  return f;
+}
+
+TEST(ExecutionExpertise, ASkillDoneWorseThanNoiseMakesEveryTimeIsChargedThoughNoSegmentPassesTheFloor) {
+  // Each of skill 1's three segments scores -0.3: above the segment floor (-0.5), but noise does not spoil
+  // one skill three times; its median is below the floor for medians of three (-0.2).
+  const std::vector<ExecutionTrial> three = repeated_trials({-0.3, -0.3, -0.3});
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise(three, 3, 2, ExpertiseMode::QualityAware, -0.5).estimate.expertise[1],
+                   0.0);
+  const ExecutionExpertise e =
+      estimate_execution_expertise(three, 3, 2, ExpertiseMode::QualityAware, with_repeated(-0.15, -0.2));
+  EXPECT_NEAR(e.estimate.expertise[1], 3 * (-0.3 + 0.2) / 2, 1e-12);
+  EXPECT_DOUBLE_EQ(e.estimate.expertise[0], 0.0);
+  ASSERT_FALSE(e.estimate.targets.empty());
+  EXPECT_EQ(e.estimate.targets[0], 1);
+  EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
+  // Once in three is not repeated: the median is the learner's usual.
+  const std::vector<ExecutionTrial> once = repeated_trials({-0.3, -0.02, -0.03});
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise(once, 3, 2, ExpertiseMode::QualityAware, with_repeated(-0.15, -0.2))
+                       .estimate.expertise[1],
+                   0.0);
+}
+
+TEST(ExecutionExpertise, TwoSegmentsAreJudgedByTheirMeanAgainstTheFloorForTwo) {
+  const std::vector<ExecutionTrial> two = repeated_trials({-0.3, -0.1});  // mean -0.2
+  const ExecutionExpertise e =
+      estimate_execution_expertise(two, 3, 2, ExpertiseMode::QualityAware, with_repeated(-0.15, -0.5));
+  EXPECT_NEAR(e.estimate.expertise[1], (-0.3 + 0.15) / 2, 1e-12);  // only the part beyond -0.15 counts
+  EXPECT_DOUBLE_EQ(estimate_execution_expertise(two, 3, 2, ExpertiseMode::QualityAware, with_repeated(-0.25, -0.05))
+                       .estimate.expertise[1],
+                   0.0);  // -0.2 is within the floor for two; the floor for three or more does not apply to two
+  EXPECT_DOUBLE_EQ(median_score({-0.3, -0.1}), -0.2);
+  EXPECT_DOUBLE_EQ(median_score({-0.3, -0.1, -0.9, 0.0}), -0.2);
+  EXPECT_THROW(median_score({}), InputError);
+}
+
+TEST(ExecutionExpertise, ALearnerInAHandOfItsOwnIsNotChargedForRepeatedDifferences) {
+  // own_hand_trials: the learner takes reference 0 as its hand; its skill 1 differs from the expert's in every
+  // trial by style and is within the hand. Repeated floors close to 0 would charge every skill of an expert's hand.
+  const std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.01);
+  const NoiseFloor tight = with_repeated(-0.001, -0.001);
+  const ExecutionExpertise e = estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware, tight);
+  EXPECT_EQ(e.learner_hands, std::vector<int>{0});
+  for (double x : e.estimate.expertise) EXPECT_DOUBLE_EQ(x, 0.0);
+  // The same scores with nothing to take as a hand: every skill is repeatedly worse than the tight floors.
+  const ExecutionExpertise plain =
+      estimate_execution_expertise(without_references(trials), 3, 2, ExpertiseMode::QualityAware, tight);
+  for (double x : plain.estimate.expertise) EXPECT_LT(x, 0.0);
+  NoiseFloor positive = tight;
+  positive.repeated_more = 0.1;
+  EXPECT_THROW(estimate_execution_expertise(trials, 3, 2, ExpertiseMode::QualityAware, positive), InputError);
+}
+
 TEST(ExecutionExpertise, RefusesSegmentsScoredAgainstDifferentReferences) {
   std::vector<ExecutionTrial> trials = own_hand_trials(-0.8, -0.5);
   trials[1].segments[2].reference_rewards.pop_back();

@@ -40,7 +40,7 @@ class ToyTaskKit final : public TaskKit {
   double drill_attempt_reward(const PlayableDrill& drill, const Json& attempt) const override;
   // The position is the 1-D car's (state 0); an aligned step's execution error is 1 when the positions differ.
   std::vector<TracePoint3> trace_points(const StepSequence& steps) const override;
-  std::optional<double> execution_noise_floor() const override { return std::nullopt; }
+  std::optional<NoiseFloor> execution_noise_floor() const override { return std::nullopt; }
   ExpertiseMode learners_expertise() const override { return expertise_; }
   double execution_reward(const StepSequence& expert, const StepSequence& learner, const StepAlignment& path, int begin,
                           int end) const override;

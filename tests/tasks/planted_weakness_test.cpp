@@ -277,6 +277,39 @@ TEST(PlantedWeakness, WritingQualityAwareExpertiseFindsTheBadlyWrittenLetterUnde
   EXPECT_GE(quality_aware, measure(ExpertiseMode::Alg2).first);
 }
 
+// Letters in another drawer's shape as close to the paper's as noise leaves the paper's own (within the segment
+// floor each time), but that shape every time: the repeated floors find them, the segment floor alone does not
+// (measured at seed 24, which no table uses, 9 learners per letter: 3 of 4 such learners found, 0 of 4 without;
+// noise-only learners 9 of 9 quiet either way).
+TEST(PlantedWeakness, WritingRepeatedEvidenceFindsALetterWrittenInACloseShapeEveryTime) {
+  ASSERT_TRUE(std::filesystem::exists(shipped_writing_model()));
+  const WritingSetup& s = writing_setup();
+  ASSERT_TRUE(s.kit->execution_noise_floor().has_value() && s.kit->execution_noise_floor()->repeated_more);
+  WritingKitOptions segment_only;
+  segment_only.execution_noise_floor = NoiseFloor(s.kit->execution_noise_floor()->segment);
+  const WritingKit plain(std::make_shared<CompileExtractor>(CompileExtractor::load(shipped_writing_model(), "writing")),
+                         "", segment_only);
+  struct Count {
+    int found = 0, learners = 0, quiet = 0;
+  };
+  auto within_the_floor = [&](const WritingKit& kit) {
+    const PlantedWeaknessReport r =
+        measure_planted_weaknesses(kit, ClassicDrawerGlyphs::load(), 9, 24, ExpertiseMode::QualityAware);
+    Count c{0, 0, r.noise_without_confident_target};
+    for (const auto& [key, cell] : r.other_drawers)
+      if (cell.shape_score > r.noise_floor->segment) c.found += cell.found, c.learners += cell.learners;
+    return c;
+  };
+  const Count repeated = within_the_floor(*s.kit), alone = within_the_floor(plain);
+  std::printf("within the segment floor: %d of %d found with the repeated floors, %d of %d without\n", repeated.found,
+              repeated.learners, alone.found, alone.learners);
+  ASSERT_EQ(repeated.learners, alone.learners);
+  ASSERT_GT(repeated.learners, 0);
+  EXPECT_GT(repeated.found, alone.found);
+  EXPECT_GE(repeated.found, repeated.learners - 1);
+  EXPECT_EQ(repeated.quiet, alone.quiet);
+}
+
 // Noise-only realistic learners (the planted table's background hand, no fault) at a seed no table uses: with
 // the noise floor they get no confident target (measured: 10 of 10; with the outlier cut alone 6 of 10).
 TEST(PlantedWeakness, WritingNoiseOnlyLearnersGetNoConfidentTarget) {

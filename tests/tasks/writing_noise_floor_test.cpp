@@ -15,6 +15,8 @@ NoiseFloorCalibration three_scores() {
   NoiseFloorCalibration c;
   c.learners = 2;
   c.scores = {-0.9, -0.2, 0.0};
+  c.skill_twice = {-0.4, -0.1};
+  c.skill_more = {-0.3, -0.2, -0.1};
   return c;
 }
 
@@ -27,11 +29,25 @@ TEST(WritingNoiseFloorRecord, TheFloorIsRecordedBesideTheSidecarsOtherFields) {
   const NoiseFloorCalibration c = three_scores();
   record_noise_floor(model, c, 7);
   ASSERT_TRUE(recorded_noise_floor(model).has_value());
-  EXPECT_DOUBLE_EQ(*recorded_noise_floor(model), c.floor());
-  const Json doc = read_json_file(model_sidecar_path(model));
+  EXPECT_DOUBLE_EQ(recorded_noise_floor(model)->segment, c.floor());
+  EXPECT_DOUBLE_EQ(recorded_noise_floor(model)->repeated_twice.value(), *c.noise_floor().repeated_twice);
+  EXPECT_DOUBLE_EQ(recorded_noise_floor(model)->repeated_more.value(), *c.noise_floor().repeated_more);
+  EXPECT_NEAR(*c.noise_floor().repeated_more, -0.3 + 0.02 * 0.1, 1e-12);  // 1 % of 2 gaps: 0.02 of the first
+  Json doc = read_json_file(model_sidecar_path(model));
   EXPECT_EQ(doc["data"], "words");  // kept
   EXPECT_EQ(doc["execution_noise_floor"]["seed"], 7);
   EXPECT_EQ(doc["execution_noise_floor"]["learners"], 2);
+  EXPECT_EQ(doc["execution_noise_floor"]["skills_more"], 3);
+  // A record from before the repeated floors: the segment floor alone, so no repeated evidence is charged.
+  doc["execution_noise_floor"].erase("repeated_twice");
+  doc["execution_noise_floor"].erase("repeated_more");
+  write_json_file(model_sidecar_path(model), doc);
+  ASSERT_TRUE(recorded_noise_floor(model).has_value());
+  EXPECT_FALSE(recorded_noise_floor(model)->repeated_twice.has_value());
+  EXPECT_FALSE(recorded_noise_floor(model)->repeated_more.has_value());
+  doc["execution_noise_floor"]["repeated_more"] = "high";
+  write_json_file(model_sidecar_path(model), doc);
+  EXPECT_THROW((void)recorded_noise_floor(model), InputError);
 }
 
 TEST(WritingNoiseFloorRecord, AFloorThatIsNotANumberNamesTheSidecar) {
@@ -52,7 +68,7 @@ TEST(WritingNoiseFloorRecord, TheKitTakesTheShippedModelsRecordedFloor) {
   ASSERT_TRUE(recorded_noise_floor(shipped).has_value());
   const auto kit = make_task_kit(TaskKind::writing);
   ASSERT_TRUE(kit->execution_noise_floor().has_value());
-  EXPECT_DOUBLE_EQ(*kit->execution_noise_floor(), *recorded_noise_floor(shipped));
+  EXPECT_DOUBLE_EQ(kit->execution_noise_floor()->segment, recorded_noise_floor(shipped)->segment);
 }
 
 TEST(WritingNoiseFloorRecord, AUsersModelWithABadFloorIsRefusedNamingItsSidecar) {
