@@ -92,7 +92,8 @@ std::vector<ExecutionTrial> in_learners_hand(std::vector<ExecutionTrial> trials,
 }
 
 // The largest penalty of `skill` over the trials, with where it happened.
-TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, const Waivers& waived, ExpertiseMode mode) {
+TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, const Waivers& waived, ExpertiseMode mode,
+                 bool repeated) {
   TargetWhy best;
   best.skill = skill;
   best.delta = -1.0;
@@ -109,7 +110,9 @@ TargetWhy why_of(int skill, const std::vector<ExecutionTrial>& trials, const Wai
       const double delta = std::max(missing, error);
       if (delta <= best.delta) continue;
       best = {skill,
-              missing >= error ? TargetReason::Missing : TargetReason::LargeError,
+              missing >= error ? TargetReason::Missing
+              : repeated       ? TargetReason::RepeatedError
+                               : TargetReason::LargeError,
               static_cast<int>(t),
               static_cast<int>(k + 1),
               delta,
@@ -154,7 +157,8 @@ std::map<int, double> repeatedly_worse(const std::vector<ExecutionTrial>& trials
 // this learner does everything else, and from what noise does, is charged, and the ordinary scatter of a
 // hand or a device is not. A skill done repeatedly worse than noise makes is charged beyond its repeated floor.
 std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> trials,
-                                                const std::optional<NoiseFloor>& floor, bool in_experts_hand) {
+                                                const std::optional<NoiseFloor>& floor,
+                                                const std::map<int, double>& repeated) {
   std::vector<double> rewards;
   for (const ExecutionTrial& t : trials)
     for (const SegmentExecution& s : t.segments) rewards.push_back(s.reward);
@@ -164,8 +168,6 @@ std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> tria
   for (double r : rewards) deviations.push_back(std::abs(r - median));
   const double spread = kMadToStandardDeviation * median_of(deviations);
   const double cut = std::min(median - kOutlierCut * spread, floor ? floor->segment : 0.0);
-  const std::map<int, double> repeated =
-      floor && in_experts_hand ? repeatedly_worse(trials, *floor) : std::map<int, double>{};
   for (ExecutionTrial& t : trials)
     for (std::size_t k = 0; k < t.segments.size(); ++k) {
       const auto it = repeated.find(t.trial.expert.segments[k].skill);
@@ -173,6 +175,24 @@ std::vector<ExecutionTrial> relative_to_learner(std::vector<ExecutionTrial> tria
       t.segments[k].reward = std::min(0.0, t.segments[k].reward - skill_cut);
     }
   return trials;
+}
+
+// The execution term: each segment's charge beyond its cut (relative_to_learner), weighted by 1 / j.
+void add_execution_charges(ExpertiseEstimate& estimate, const std::vector<ExecutionTrial>& trials,
+                           const std::map<int, double>& repeated) {
+  for (std::size_t t = 0; t < trials.size(); ++t) {
+    const ExecutionTrial& et = trials[t];
+    for (std::size_t k = 0; k < et.segments.size(); ++k) {
+      const int j = static_cast<int>(k + 1);
+      const double q = et.segments[k].reward;
+      if (q == 0.0) continue;
+      const int m = et.trial.expert.segments[k].skill;
+      const double delta = -kExecutionWeight * q / j;
+      estimate.expertise[static_cast<std::size_t>(m)] -= delta;
+      estimate.contributions[static_cast<std::size_t>(m)].push_back(
+          {static_cast<int>(t), et.trial.scenario, j, q, delta, true, repeated.count(m) > 0});
+    }
+  }
 }
 
 Waivers missing_waivers(const std::vector<ExecutionTrial>& trials, ExpertiseMode mode,
@@ -236,6 +256,8 @@ const char* target_reason_words(TargetReason reason) {
       return "done with a large error here";
     case TargetReason::NoMistake:
       return "no mistake seen";
+    case TargetReason::RepeatedError:
+      return "done a little wrong every time";
   }
   return "missing";
 }
@@ -249,28 +271,21 @@ ExecutionExpertise estimate_execution_expertise(const std::vector<ExecutionTrial
   ExecutionExpertise out;
   if (mode == ExpertiseMode::QualityAware) out.learner_hands = learners_hands(given_trials, references);
   const std::vector<ExecutionTrial> given = in_learners_hand(given_trials, out.learner_hands);
-  const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor, out.learner_hands.empty());
+  // Repeated evidence only in the expert's hand (the header says why).
+  const std::map<int, double> repeated = noise_floor && mode == ExpertiseMode::QualityAware && out.learner_hands.empty()
+                                             ? repeatedly_worse(given, *noise_floor)
+                                             : std::map<int, double>{};
+  const std::vector<ExecutionTrial> trials = relative_to_learner(given, noise_floor, repeated);
   const Waivers waived = missing_waivers(given, mode, noise_floor);
   std::vector<ExpertiseTrial> plain;
   for (const ExecutionTrial& t : given) plain.push_back(t.trial);
   out.estimate = estimate_expertise(plain, num_skills, num_targets);
   if (mode == ExpertiseMode::QualityAware) {
     waive_missing(out.estimate, waived);
-    for (std::size_t t = 0; t < trials.size(); ++t) {
-      const ExecutionTrial& et = trials[t];
-      for (std::size_t k = 0; k < et.segments.size(); ++k) {
-        const int j = static_cast<int>(k + 1);
-        const double q = et.segments[k].reward;
-        if (q == 0.0) continue;
-        const auto m = static_cast<std::size_t>(et.trial.expert.segments[k].skill);
-        const double delta = -kExecutionWeight * q / j;
-        out.estimate.expertise[m] -= delta;
-        out.estimate.contributions[m].push_back({static_cast<int>(t), et.trial.scenario, j, q, delta, true});
-      }
-    }
+    add_execution_charges(out.estimate, trials, repeated);
     rank_expertise(out.estimate, num_targets);
   }
-  for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, waived, mode));
+  for (int m : out.estimate.targets) out.why.push_back(why_of(m, trials, waived, mode, repeated.count(m) > 0));
   if (!out.learner_hands.empty()) out.estimate.learner_hand = hand_name(given_trials, out.learner_hands.front());
   return out;
 }

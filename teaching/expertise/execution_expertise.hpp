@@ -102,9 +102,10 @@ struct ExecutionTrial {
 };
 
 // NoMistake: a target without any penalty (fewer weak skills than targets: Alg. 3 still drills the skills
-// the expert relies on); its place is the skill's first expert segment.
-enum class TargetReason { Missing, LargeError, NoMistake };
-// "missing", "done with a large error here", "no mistake seen"
+// the expert relies on); its place is the skill's first expert segment. RepeatedError: charged by repeated
+// evidence, so no one segment was far off but every one was; its place is the segment charged most.
+enum class TargetReason { Missing, LargeError, NoMistake, RepeatedError };
+// "missing", "done with a large error here", "no mistake seen", "done a little wrong every time"
 const char* target_reason_words(TargetReason reason);
 
 struct TargetWhy {

@@ -38,6 +38,9 @@ struct ExpertiseContribution {
   // Quality-aware expertise (execution_expertise.hpp): the skill was shown but done worse than the learner's
   // other skills; then `reward` is that segment's execution score and delta = −w·reward / j.
   bool execution = false;
+  // ... charged by repeated evidence: done worse than noise makes in every segment of the skill, each by a
+  // little; then `reward` is q beyond the floor for medians (execution_expertise.hpp).
+  bool repeated = false;
   bool operator==(const ExpertiseContribution&) const = default;
 };
 

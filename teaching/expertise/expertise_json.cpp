@@ -28,7 +28,8 @@ Json expertise_to_json(const ExpertiseEstimate& estimate) {
                       {"position", c.position},
                       {"reward", c.reward},
                       {"delta", c.delta},
-                      {"execution", c.execution}});
+                      {"execution", c.execution},
+                      {"repeated", c.repeated}});
     }
     contributions.push_back(std::move(list));
   }
@@ -64,9 +65,10 @@ ExpertiseEstimate expertise_from_json(const JsonView& view) {
       const long long position = c.at("position").integer();
       if (position < 1) c.at("position").fail("positions count from 1");
       const auto execution = c.find("execution");  // absent in records written before quality-aware expertise
+      const auto repeated = c.find("repeated");    // ... and before repeated evidence (2026-12-05)
       list.push_back({static_cast<int>(c.at("trial").integer()), static_cast<int>(c.at("scenario").integer()),
                       static_cast<int>(position), c.at("reward").number(), c.at("delta").number(),
-                      execution && execution->boolean()});
+                      execution && execution->boolean(), repeated && repeated->boolean()});
     }
     out.contributions.push_back(std::move(list));
   }

@@ -105,7 +105,8 @@ DiagnosisExplanation explain_diagnosis(const SessionReview& review) {
     s.expertise = now.expertise[static_cast<std::size_t>(m)];
     s.occurrences = now.occurrences[static_cast<std::size_t>(m)];
     for (const ExpertiseContribution& c : now.contributions[static_cast<std::size_t>(m)])
-      s.missed.push_back({pretest[static_cast<std::size_t>(c.trial)]->seq, c.position, c.reward, c.delta, c.execution});
+      s.missed.push_back(
+          {pretest[static_cast<std::size_t>(c.trial)]->seq, c.position, c.reward, c.delta, c.execution, c.repeated});
     s.place = place_of(review, tests, pretest, placed, m);
     out.skills.push_back(std::move(s));
   }

@@ -23,6 +23,7 @@ struct MissedSkillTrial {
   double reward = 0.0;     // r of the learner's trial (execution: the segment's execution score q)
   double delta = 0.0;      // Δ = −r / j
   bool execution = false;  // quality-aware expertise: shown but done badly, not missing
+  bool repeated = false;   // ... a little off in every segment of the skill (repeated evidence)
 };
 
 // Where a skill's largest penalty happened (TargetWhy), with what it takes to picture it.

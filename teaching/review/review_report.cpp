@@ -77,7 +77,9 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
     << (d.mode == ExpertiseMode::Alg2 ? ". "
                                       : "; one done worse than the learner's other skills (\"done badly\") costs "
                                         "&Delta; = &minus;q / j, q how far that part's execution score falls beyond "
-                                        "the learner's usual spread and what noise alone does. ")
+                                        "the learner's usual spread and what noise alone does (for a skill a "
+                                        "little off every time, \"a little off\", beyond what noise does to a "
+                                        "skill every time). ")
     << (d.learner_hand.empty()
             ? std::string()
             : "The learner's letters follow a hand of their own, closest to " + html_escape(d.learner_hand) +
@@ -97,8 +99,12 @@ void diagnosis_section(std::ostringstream& h, const SessionReport& s) {
     if (skill.missed.empty()) h << "none";
     for (std::size_t i = 0; i < skill.missed.size(); ++i) {
       const auto& m = skill.missed[i];
-      h << (i ? "; " : "") << "trial " << m.seq << (m.execution ? " done badly" : "") << " (j=" << m.position
-        << (m.execution ? ", q=" : ", r=") << number(m.reward) << ", &Delta;=" << number(m.delta) << ")";
+      h << (i ? "; " : "") << "trial " << m.seq
+        << (m.repeated    ? " a little off (every time)"
+            : m.execution ? " done badly"
+                          : "")
+        << " (j=" << m.position << (m.execution ? ", q=" : ", r=") << number(m.reward)
+        << ", &Delta;=" << number(m.delta) << ")";
     }
     h << "</td></tr>\n";
   }

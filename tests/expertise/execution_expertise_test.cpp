@@ -247,7 +247,9 @@ TEST(ExecutionExpertise, ASkillDoneWorseThanNoiseMakesEveryTimeIsChargedThoughNo
   EXPECT_DOUBLE_EQ(e.estimate.expertise[0], 0.0);
   ASSERT_FALSE(e.estimate.targets.empty());
   EXPECT_EQ(e.estimate.targets[0], 1);
-  EXPECT_EQ(e.why[0].reason, TargetReason::LargeError);
+  EXPECT_EQ(e.why[0].reason, TargetReason::RepeatedError);
+  EXPECT_STREQ(target_reason_words(e.why[0].reason), "done a little wrong every time");
+  for (const ExpertiseContribution& c : e.estimate.contributions[1]) EXPECT_TRUE(c.execution && c.repeated);
   // Once in three is not repeated: the median is the learner's usual.
   const std::vector<ExecutionTrial> once = repeated_trials({-0.3, -0.02, -0.03});
   EXPECT_DOUBLE_EQ(estimate_execution_expertise(once, 3, 2, ExpertiseMode::QualityAware, with_repeated(-0.15, -0.2))

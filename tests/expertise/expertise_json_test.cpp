@@ -28,15 +28,18 @@ TEST(ExpertiseJson, RoundTrips) {
 TEST(ExpertiseJson, ExecutionPenaltiesKeepTheirKindAndOlderRecordsReadAsMissing) {
   ExpertiseEstimate e = estimate_expertise({{3, segmentation_of({0, 1}), segmentation_of({0}), -0.5}}, 2, 2);
   e.contributions[0].push_back({0, 3, 1, -0.4, 0.4, true});
+  e.contributions[1].push_back({0, 3, 2, -0.1, 0.05, true, true});
   Json doc = expertise_to_json(e);
   const ExpertiseEstimate back = expertise_from_json(JsonView(doc, "diag.json"));
   EXPECT_EQ(back.contributions, e.contributions);
   EXPECT_TRUE(back.contributions[0].back().execution);
+  EXPECT_FALSE(back.contributions[0].back().repeated);
+  EXPECT_TRUE(back.contributions[1].back().repeated);
   for (Json& per_skill : doc["contributions"])
-    for (Json& c : per_skill) c.erase("execution");  // a record written before the field existed
+    for (Json& c : per_skill) c.erase("execution"), c.erase("repeated");  // a record written before the fields
   const ExpertiseEstimate old = expertise_from_json(JsonView(doc, "diag.json"));
   for (const auto& per_skill : old.contributions)
-    for (const ExpertiseContribution& c : per_skill) EXPECT_FALSE(c.execution);
+    for (const ExpertiseContribution& c : per_skill) EXPECT_FALSE(c.execution || c.repeated);
 }
 
 TEST(ExpertiseJson, TheLearnersHandIsKeptAndWrittenOnlyWhenThereIsOne) {

@@ -7,6 +7,9 @@ std::string place_caption(int trial, const std::string& skill, TargetReason reas
   if (reason == TargetReason::Missing)
     return lead + "The skill model did not find \"" + skill +
            "\" in it; in orange, the part of yours that lines up with where the expert does it.";
+  if (reason == TargetReason::RepeatedError)
+    return lead + "In orange, the part of yours that lines up with where the expert does \"" + skill +
+           "\": a little off here, and in every other trial too.";
   return lead + "In orange, the part of yours that lines up with where the expert does \"" + skill +
          "\": done clearly worse than the rest of your trials.";
 }

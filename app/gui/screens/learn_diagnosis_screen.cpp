@@ -27,8 +27,9 @@ namespace sc {
 namespace {
 
 // Why a skill lost expertise and where: its largest penalty, e.g. "missing in trial 2" (Alg. 2 charges a
-// skill the expert used in a trial that the learner's trial does not show) or "done with a large error in
-// trial 2" (quality-aware expertise: shown, but done clearly worse than the learner's other skills).
+// skill the expert used in a trial that the learner's trial does not show), "done with a large error in
+// trial 2" (quality-aware expertise: shown, but done clearly worse than the learner's other skills) or "done a
+// little wrong every time, most in trial 2" (repeated evidence: no one segment far off, every one off).
 std::string why_words(const ExpertiseEstimate& e, int skill) {
   const auto& list = e.contributions[static_cast<std::size_t>(skill)];
   const ExpertiseContribution* worst = nullptr;
@@ -39,6 +40,7 @@ std::string why_words(const ExpertiseEstimate& e, int skill) {
     if (!worst || c.delta > worst->delta) worst = &c;
   }
   if (!worst) return "";
+  if (worst->repeated) return "done a little wrong every time, most in trial " + std::to_string(worst->trial + 1);
   std::string out = std::string(worst->execution ? "done with a large error in trial " : "missing in trial ") +
                     std::to_string(worst->trial + 1);
   if (penalties > 1) out += " (and " + std::to_string(penalties - 1) + " more)";

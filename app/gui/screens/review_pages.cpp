@@ -275,7 +275,8 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
             ? ""
             : "; one shown but done worse than the learner's other skills costs "
               "Delta = -q / j (q: how far that part's execution score falls beyond the learner's usual "
-              "spread and what noise alone does)");
+              "spread and what noise alone does; for a skill a little off every time, beyond what noise does "
+              "to a skill every time)");
     if (!d->learner_hand.empty())
       ImGui::TextDisabled(
           "The learner's letters follow a hand of their own, closest to %s: each part was also scored "
@@ -310,8 +311,10 @@ void draw_review_expertise(UiContext& ui, ReviewModel& model) {
       for (const auto& m : skill.missed) {
         ImGui::Bullet();
         ImGui::TextWrapped("%s in pre-test trial %d: j = %d, %s = %.3f, Delta = %.3f",
-                           m.execution ? "done badly" : "missed", m.seq, m.position, m.execution ? "q" : "r", m.reward,
-                           m.delta);
+                           m.repeated    ? "a little off (every time)"
+                           : m.execution ? "done badly"
+                                         : "missed",
+                           m.seq, m.position, m.execution ? "q" : "r", m.reward, m.delta);
       }
       ImGui::EndGroup();
     }

@@ -27,9 +27,12 @@ std::vector<review_view::PlacePicture> place_pictures(const review::DiagnosisExp
   for (const review::SkillExplanation& skill : diagnosis.skills) {
     if (!skill.place) continue;
     const review::SkillPlace& place = *skill.place;
-    out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " +
-                       (place.reason == TargetReason::Missing ? "missed" : "done badly") + " in pre-test trial " +
-                       std::to_string(place.seq),
+    const std::string trial = " in pre-test trial " + std::to_string(place.seq);
+    const std::string what = place.reason == TargetReason::Missing ? "missed" + trial
+                             : place.reason == TargetReason::RepeatedError
+                                 ? "a little off" + trial + ", as in every trial"
+                                 : "done badly" + trial;
+    out.push_back({"skill " + std::to_string(skill.skill) + ": " + skill.description + " - " + what,
                    trial_part_picture_data(place)});
   }
   return out;
