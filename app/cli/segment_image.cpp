@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 
+#include "app/core/fitted_text.hpp"
 #include "engine/parking_view/parking_path.hpp"
 #include "engine/parking_view/parking_scene.hpp"
 #include "engine/render/gl_context.hpp"
@@ -31,24 +32,32 @@ std::string legend_line(const SkillSegment& seg) {
 }
 
 // The legend's panel: top-left, as wide as its widest line. The picture is drawn to its right, so the panel
-// never hides a part of the path.
+// never hides a part of the path. The caption (a file name) is cut in its middle to the legend's width or
+// kCaptionShare of the image, whichever is wider, so a long name cannot squeeze the picture.
 struct LegendPanel {
   ImVec2 origin;       // the caption's top-left
   float right = 0.0f;  // the panel's right edge
+  std::string caption;
 };
+constexpr float kCaptionShare = 0.4f;
 
-LegendPanel legend_panel(const ImGuiLayer& imgui, const std::string& caption, const Segmentation& segmentation) {
+LegendPanel legend_panel(const ImGuiLayer& imgui, const std::string& caption, const Segmentation& segmentation,
+                         int width) {
   const float s = imgui.scale();
   const ImVec2 origin(14.0f * s, 12.0f * s);
-  float text = imgui.fonts().bold->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, caption.c_str()).x;
+  float lines = 0.0f;
   for (const SkillSegment& seg : segmentation.segments)
-    text = std::max(text, 30.0f * s + ImGui::CalcTextSize(legend_line(seg).c_str()).x);
-  return {origin, origin.x + text + 10.0f * s};
+    lines = std::max(lines, 30.0f * s + ImGui::CalcTextSize(legend_line(seg).c_str()).x);
+  const auto bold = [&](const std::string& t) {
+    return imgui.fonts().bold->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, 0.0f, t.c_str()).x;
+  };
+  const std::string fitted =
+      fitted_in_middle(caption, std::max(lines, kCaptionShare * static_cast<float>(width) - origin.x), bold);
+  return {origin, origin.x + std::max(lines, bold(fitted)) + 10.0f * s, fitted};
 }
 
 // The caption and one legend line per segment on a dark panel.
-void draw_legend(const ImGuiLayer& imgui, const LegendPanel& panel, const std::string& caption,
-                 const Segmentation& segmentation) {
+void draw_legend(const ImGuiLayer& imgui, const LegendPanel& panel, const Segmentation& segmentation) {
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   const SkillColors colors(segmentation);
   const float s = imgui.scale();
@@ -57,7 +66,7 @@ void draw_legend(const ImGuiLayer& imgui, const LegendPanel& panel, const std::s
   const auto rows = static_cast<float>(segmentation.segments.size() + 1);
   dl->AddRectFilled({origin.x - 8 * s, origin.y - 6 * s}, {panel.right, origin.y + line * rows + 2 * s},
                     IM_COL32(12, 15, 20, 190), 8 * s);
-  dl->AddText(imgui.fonts().bold, ImGui::GetFontSize(), origin, IM_COL32(255, 255, 255, 255), caption.c_str());
+  dl->AddText(imgui.fonts().bold, ImGui::GetFontSize(), origin, IM_COL32(255, 255, 255, 255), panel.caption.c_str());
   for (std::size_t i = 0; i < segmentation.segments.size(); ++i) {
     const SkillSegment& seg = segmentation.segments[i];
     const float y = origin.y + line * static_cast<float>(i + 1);
@@ -76,12 +85,12 @@ RgbaImage render(int width, int height, Color clear, const std::string& caption,
   for (int frame = 0; frame < kFrames; ++frame) {
     imgui.make_current();
     imgui.begin_frame(1.0 / 60.0);
-    const LegendPanel panel = legend_panel(imgui, caption, segmentation);
+    const LegendPanel panel = legend_panel(imgui, caption, segmentation, width);
     const float left = std::min(panel.right + 8.0f * imgui.scale(), 0.5f * static_cast<float>(width));
     renderer.begin_frame(clear);
     paint_world(renderer, PixelViewport{left, 0.0f, static_cast<float>(width) - left, static_cast<float>(height)});
     renderer.end_frame();
-    draw_legend(imgui, panel, caption, segmentation);
+    draw_legend(imgui, panel, segmentation);
     imgui.end_frame();
     context->present();
   }

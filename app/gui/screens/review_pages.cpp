@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "app/core/fitted_text.hpp"
 #include "app/gui/navigator.hpp"
 #include "app/gui/screens/learn_hand_picture.hpp"
 #include "app/gui/screens/learn_skill_picture.hpp"
@@ -25,11 +26,8 @@ std::string session_label(const review::SessionListRow& row) {
 }
 
 // `text` cut to fit `width` pixels in the current font, ending in "..." when cut.
-std::string fitted_to_width(const std::string& text, float width) {
-  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
-  std::string cut = text;
-  while (!cut.empty() && ImGui::CalcTextSize((cut + "...").c_str()).x > width) cut.pop_back();
-  return cut + "...";
+std::string fitted_label(const std::string& text, float width) {
+  return fitted_to_width(text, width, [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; });
 }
 
 void world_frame(UiContext& ui, float x, float y, float w, float h) {
@@ -94,7 +92,7 @@ void draw_review_top_bar(UiContext& ui, ReviewModel& model, ReviewPage& page) {
   if (const auto* row = model.session_row()) {
     ImGui::SameLine(0, 24 * s);
     const std::string label = session_label(*row);  // cut before the Start screen button, whole on hover
-    ImGui::TextDisabled("%s", fitted_to_width(label, back_x - ImGui::GetCursorPosX() - 16 * s).c_str());
+    ImGui::TextDisabled("%s", fitted_label(label, back_x - ImGui::GetCursorPosX() - 16 * s).c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", label.c_str());
   }
   ImGui::SameLine(back_x);
