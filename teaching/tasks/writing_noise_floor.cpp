@@ -1,5 +1,7 @@
 #include "teaching/tasks/writing_noise_floor.hpp"
 
+#include <cmath>
+
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "teaching/skills/compile_model.hpp"
@@ -30,7 +32,10 @@ std::optional<NoiseFloor> recorded_noise_floor(const std::filesystem::path& mode
   const auto number = [&](const char* key) {
     if (!floor.is_object() || !floor.contains(key) || !floor[key].is_number())
       throw InputError(sidecar.string(), std::string("$.") + kField + "." + key + " is not a number");
-    return floor[key].get<double>();
+    const double value = floor[key].get<double>();
+    if (!(std::isfinite(value) && value <= 0.0))
+      throw InputError(sidecar.string(), std::string("$.") + kField + "." + key + " must be <= 0 (scores are)");
+    return value;
   };
   NoiseFloor out(number("value"));
   if (floor.contains("repeated_twice")) out.repeated_twice = number("repeated_twice");

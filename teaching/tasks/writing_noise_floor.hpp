@@ -29,7 +29,7 @@ inline constexpr std::uint64_t kNoiseFloorSeed = 0;
 NoiseFloorCalibration calibrate_writing_noise_floor(const WritingKit& kit, int learners, std::uint64_t seed);
 
 // The floor recorded in `model`'s sidecar; nullopt when there is no sidecar or it records none. Throws
-// InputError naming the sidecar when it is not JSON or a floor it records is not a number.
+// InputError naming the sidecar when it is not JSON or a floor it records is not a number <= 0.
 std::optional<NoiseFloor> recorded_noise_floor(const std::filesystem::path& model);
 
 // Adds (or replaces) the floor in `model`'s sidecar, keeping everything else. Throws InputError when the

@@ -48,6 +48,15 @@ TEST(WritingNoiseFloorRecord, TheFloorIsRecordedBesideTheSidecarsOtherFields) {
   doc["execution_noise_floor"]["repeated_more"] = "high";
   write_json_file(model_sidecar_path(model), doc);
   EXPECT_THROW((void)recorded_noise_floor(model), InputError);
+  doc["execution_noise_floor"]["repeated_more"] = 0.2;  // scores are <= 0: a positive floor is a broken record
+  write_json_file(model_sidecar_path(model), doc);
+  try {
+    (void)recorded_noise_floor(model);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("repeated_more must be <= 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(model_sidecar_path(model).string()), std::string::npos) << e.what();
+  }
 }
 
 TEST(WritingNoiseFloorRecord, AFloorThatIsNotANumberNamesTheSidecar) {
