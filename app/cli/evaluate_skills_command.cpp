@@ -221,9 +221,8 @@ int print_noise_floor(const EvaluateArgs& args, const std::shared_ptr<const Comp
               noise_floor_report(calibration, kit.execution_noise_floor()).c_str());
   if (args.record) {
     record_noise_floor(args.model, calibration, seed);
-    const NoiseFloor f = calibration.noise_floor();
-    std::printf("recorded %.3f (repeated twice %.3f, 3 or more %.3f) in %s\n", f.segment, f.repeated_twice.value_or(0.0),
-                f.repeated_more.value_or(0.0), model_sidecar_path(args.model).string().c_str());
+    std::printf("recorded this calibration's floors (the 1 %% figures above) in %s\n",
+                model_sidecar_path(args.model).string().c_str());
   }
   return 0;
 }

@@ -31,13 +31,10 @@ std::string fitted_to_width(const std::string& text, float width, const TextMeas
 
 std::string fitted_in_middle(const std::string& text, float width, const TextMeasure& measure) {
   if (measure(text) <= width) return text;
-  std::string head = text, tail;
   // Split at the middle code point, then shorten the head first (two head code points per tail one).
-  const std::size_t half = text.size() / 2;
-  std::size_t at = half;
+  std::size_t at = text.size() / 2;
   while (at < text.size() && continuation(text[at])) ++at;
-  head = text.substr(0, at);
-  tail = text.substr(at);
+  std::string head = text.substr(0, at), tail = text.substr(at);
   for (int turn = 0; !(head.empty() && tail.empty()) && measure(head + "..." + tail) > width; ++turn) {
     if ((turn % 3 != 2 && !head.empty()) || tail.empty())
       drop_last(head);

@@ -80,12 +80,13 @@ Json diagnosis_json(const TaskKit& kit, const Diagnosis& diagnosis) {
                       {"expert_skills", segmentation_json(t.expert)}});
   out["trials"] = std::move(trials);
   out["expertise_mode"] = expertise_mode_name(diagnosis.mode);
-  const std::optional<NoiseFloor> floor = kit.execution_noise_floor();
-  const bool floored = diagnosis.mode == ExpertiseMode::QualityAware && floor.has_value();
-  out["noise_floor"] = floored ? Json(floor->segment) : Json(nullptr);
-  const auto repeated = [&](const std::optional<double>& f) { return floored && f ? Json(*f) : Json(nullptr); };
-  out["repeated_noise_floor"] = {{"twice", repeated(floor ? floor->repeated_twice : std::nullopt)},
-                                 {"more", repeated(floor ? floor->repeated_more : std::nullopt)}};
+  // The floors quality-aware expertise used (none in Alg. 2 mode or for a kit without them).
+  const std::optional<NoiseFloor> floor =
+      diagnosis.mode == ExpertiseMode::QualityAware ? kit.execution_noise_floor() : std::nullopt;
+  const auto value = [](const std::optional<double>& f) { return f ? Json(*f) : Json(nullptr); };
+  out["noise_floor"] = floor ? Json(floor->segment) : Json(nullptr);
+  out["repeated_noise_floor"] = {{"twice", value(floor ? floor->repeated_twice : std::nullopt)},
+                                 {"more", value(floor ? floor->repeated_more : std::nullopt)}};
   out["learner_hand"] =
       diagnosis.expertise.learner_hand.empty() ? Json(nullptr) : Json(diagnosis.expertise.learner_hand);
   out["expertise"] = expertise_to_json(diagnosis.expertise);

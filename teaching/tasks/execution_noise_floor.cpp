@@ -22,8 +22,8 @@ double percentile_of(const std::vector<double>& ascending, double p, const char*
 
 NoiseFloor NoiseFloorCalibration::noise_floor() const {
   NoiseFloor f(floor());
-  if (!skill_twice.empty()) f.repeated_twice = percentile_of(skill_twice, kNoiseFloorPercentile, "");
-  if (!skill_more.empty()) f.repeated_more = percentile_of(skill_more, kNoiseFloorPercentile, "");
+  if (!skill_twice.empty()) f.repeated_twice = percentile_of(skill_twice, kNoiseFloorPercentile, "skill medians");
+  if (!skill_more.empty()) f.repeated_more = percentile_of(skill_more, kNoiseFloorPercentile, "skill medians");
   return f;
 }
 
@@ -62,8 +62,8 @@ std::string noise_floor_report(const NoiseFloorCalibration& c, const std::option
                   "noise-only skills with %s in a pre-test (%zu): lowest %.3f, **%g %% %.3f**, 5 %% %.3f, median "
                   "%.3f\n",
                   count, values->size(), values->front(), kNoiseFloorPercentile,
-                  percentile_of(*values, kNoiseFloorPercentile, ""), percentile_of(*values, 5.0, ""),
-                  percentile_of(*values, 50.0, ""));
+                  percentile_of(*values, kNoiseFloorPercentile, "skill medians"),
+                  percentile_of(*values, 5.0, "skill medians"), percentile_of(*values, 50.0, "skill medians"));
     out += line;
   }
   if (!kit_floor) return out + "the kit uses no noise floor (the outlier cut alone)\n";

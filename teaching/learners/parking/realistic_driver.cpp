@@ -163,7 +163,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
     VehicleState car = sim.vehicle();
     for (int s = 0; s < per_step; ++s) {
       const int source = k + s - delay;  // the expert's input sample the driver is reproducing
-      seen.push_back(car);
+      if (follower) seen.push_back(car);
       ParkingAction intent{0.0, 0.0};
       if (source >= 0 && source < expert_samples) {
         const std::size_t step = static_cast<std::size_t>(source / per_step);
@@ -184,9 +184,8 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         u[0] = std::max(u[0], -std::max(speed, 0.0) / (parking::kMaxAcceleration / p.control_hz));
       }
       speed += clip_action(u)[0] * parking::kMaxAcceleration / p.control_hz;
-      const ParkingAction held = clip_action(u);
-      for (int h = 0; h < substeps_per_sample; ++h)
-        car = bicycle_substep(car, acceleration_of(held), steering_of(held));
+      for (int h = 0; follower && h < substeps_per_sample; ++h)  // where the driver will see the car next
+        car = bicycle_substep(car, acceleration_of(clip_action(u)), steering_of(clip_action(u)));
       sub[static_cast<std::size_t>(s)] = u;
       out.actions.push_back(u);
     }
