@@ -47,6 +47,63 @@ std::string why_words(const ExpertiseEstimate& e, int skill) {
   return out;
 }
 
+// One row's text: the kit's words with the row's tag, and why the skill is ranked where it is.
+struct SkillRowText {
+  std::string title;
+  std::string status;
+  bool drilled = false;
+};
+
+std::vector<SkillRowText> skill_rows(const TrainingSession& s, int shown, bool any_penalty) {
+  const ExpertiseEstimate& e = s.diagnosis();
+  // A weak skill too brief to practise on its own (teachable_skills.hpp) says so: otherwise a learner
+  // wonders why a long bar gets no drill.
+  const std::vector<Segmentation> pool = demo_skills(s.kit().expert_pool());
+  const int min_steps = s.curriculum_config().min_skill_steps;
+  std::vector<SkillRowText> rows;
+  for (int r = 0; r < shown; ++r) {
+    const int m = e.ranking[static_cast<std::size_t>(r)];
+    SkillRowText row;
+    row.drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
+      return std::find(it.target_skills.begin(), it.target_skills.end(), m) != it.target_skills.end();
+    });
+    const bool brief = !row.drilled && !is_teachable(m, pool, min_steps);
+    // No-break spaces keep a tag whole when a long name wraps.
+    row.title = s.kit().describe_skill(m) + (row.drilled ? "   -\u00a0drills\u00a0now"
+                                             : brief     ? "   -\u00a0too\u00a0brief\u00a0to\u00a0drill\u00a0alone"
+                                                         : "");
+    // A target with no penalty, when others have one, was ranked among equals by how much the expert uses it: say
+    // so, or a learner wonders why a skill with no mistake gets a drill.
+    row.status = why_words(e, m);
+    if (row.status.empty())
+      row.status = std::string(target_reason_words(TargetReason::NoMistake)) +
+                   (row.drilled && any_penalty ? ": one the expert uses most" : "");
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+// Where the reasons go, for the whole page at once: beside every skill's words when each fits on one line with
+// them, else on a line of their own in every row. Deciding per row made rows of one list look unlike each other.
+struct RowLayout {
+  bool status_beside = false;
+  float height = 0.0f;  // of all rows, for the list's child window
+};
+
+RowLayout row_layout(const std::vector<SkillRowText>& rows, float column, float picture_height, float bar_height,
+                     float beside_gap, float line_gap) {
+  RowLayout out;
+  out.status_beside = std::all_of(rows.begin(), rows.end(), [&](const SkillRowText& r) {
+    return ImGui::CalcTextSize(r.title.c_str()).x + beside_gap + ImGui::CalcTextSize(r.status.c_str()).x <= column;
+  });
+  for (const SkillRowText& r : rows) {
+    float text = ImGui::CalcTextSize(r.title.c_str(), nullptr, false, column).y + line_gap + bar_height;
+    if (!out.status_beside) text += ImGui::GetTextLineHeight() + line_gap;
+    out.height += std::max(picture_height, text) + ImGui::GetStyle().ItemSpacing.y;
+  }
+  return out;
+}
+
 class LearnDiagnosisScreen final : public Screen {
  public:
   explicit LearnDiagnosisScreen(AppServices& services)
@@ -104,13 +161,6 @@ class LearnDiagnosisScreen final : public Screen {
                                   : "No skill stood out as missing: the drills cover the skills the expert relies on "
                                     "most.");
     const int shown = std::min<int>(static_cast<int>(e.ranking.size()), 8);
-    // A weak skill too brief to practise on its own (teachable_skills.hpp) says so: otherwise a learner
-    // wonders why a long bar gets no drill.
-    const std::vector<Segmentation> pool = demo_skills(kit.expert_pool());
-    const int min_steps = s.curriculum_config().min_skill_steps;
-    const ImVec2 pic(110 * sc, 56 * sc);
-    // The list scrolls when the window is too short for every row, so the button below always shows.
-    const float rows_height = shown * (pic.y + ImGui::GetStyle().ItemSpacing.y);
     // Where each target went wrong, when the diagnosis shown is the pre-test's (later adaptive rounds' evidence is
     // practice).
     const PlacedDiagnosis* placed = s.pretest_places();
@@ -122,46 +172,43 @@ class LearnDiagnosisScreen final : public Screen {
                               : "Point at a picture to see it larger.";
     const float hint_height =
         ImGui::CalcTextSize(hint, nullptr, false, ImGui::GetContentRegionAvail().x).y + ImGui::GetStyle().ItemSpacing.y;
-    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - hint_height);
     learn_ui::muted_wrapped(hint);
-    ImGui::BeginChild("skill_rows", ImVec2(0, std::min(rows_height, room)), false,
-                      rows_height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
+    const std::vector<SkillRowText> rows = skill_rows(s, shown, worst > 1e-9);
+    const ImVec2 pic(110 * sc, 56 * sc);
+    const float gap = 14 * sc, bar_height = 18 * sc;
+    // The text column: what is left beside the pictures, less a scroll bar's width in case the list scrolls.
+    const float pictures = places ? 2 * pic.x + 6 * sc : pic.x;
+    const float column = ImGui::GetContentRegionAvail().x - pictures - gap - ImGui::GetStyle().ScrollbarSize;
+    // A row's lines sit closer together than the rows do, so each skill reads as one block.
+    const float line_gap = 3 * sc;
+    const RowLayout layout = row_layout(rows, column, pic.y, bar_height, 10 * sc, line_gap);
+    // The list scrolls when the window is too short for every row, so the button below always shows.
+    const float room = std::max(2 * pic.y, static_cast<float>(ui.height) - 330 * sc - hand_height - hint_height);
+    ImGui::BeginChild("skill_rows", ImVec2(0, std::min(layout.height, room)), false,
+                      layout.height <= room ? ImGuiWindowFlags_NoScrollbar : 0);
     ImDrawList& d = *ImGui::GetWindowDrawList();
     for (int r = 0; r < shown; ++r) {
       const int m = e.ranking[static_cast<std::size_t>(r)];
-      const bool drilled = std::any_of(s.curriculum().items.begin(), s.curriculum().items.end(), [m](const auto& it) {
-        return std::find(it.target_skills.begin(), it.target_skills.end(), m) != it.target_skills.end();
-      });
-      pictures_.draw_row(d, pic, s, places ? placed : nullptr, m, drilled, sc);
-      ImGui::SameLine(0, 14 * sc);
+      const SkillRowText& row = rows[static_cast<std::size_t>(r)];
+      pictures_.draw_row(d, pic, s, places ? placed : nullptr, m, row.drilled, sc);
+      ImGui::SameLine(0, gap);
       ImGui::BeginGroup();
-      const std::string words = kit.describe_skill(m);
-      if (drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
-      const bool brief = !drilled && !is_teachable(m, pool, min_steps);
-      ImGui::TextWrapped("%s%s", words.c_str(),
-                         drilled ? "   - drills now"
-                         : brief ? "   - too brief to drill alone"
-                                 : "");
-      // A target with no penalty, when others have one, was ranked among equals by how much the expert uses it: say
-      // so, or a learner wonders why a skill with no mistake gets a drill (with no penalty anywhere the intro says it).
-      const std::string penalty = why_words(e, m);
-      const bool by_use = drilled && penalty.empty() && worst > 1e-9;
-      const std::string why =
-          by_use ? std::string(target_reason_words(TargetReason::NoMistake)) + ": one the expert uses most" : penalty;
-      if (!why.empty()) {
-        // Beside the skill's words when it fits, else on a line of its own (long parking names).
-        const float beside = ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x - 10 * sc;
-        if (ImGui::CalcTextSize(why.c_str()).x <= beside) ImGui::SameLine(0, 10 * sc);
-        ImGui::TextDisabled("%s", why.c_str());
-      }
-      if (drilled) ImGui::PopStyleColor();
+      ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(ImGui::GetStyle().ItemSpacing.x, line_gap));
+      if (row.drilled) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.7f, 0.4f, 1.0f));
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + column);
+      ImGui::TextWrapped("%s", row.title.c_str());
+      ImGui::PopTextWrapPos();
+      if (row.drilled) ImGui::PopStyleColor();
+      if (layout.status_beside) ImGui::SameLine(0, 10 * sc);
+      ImGui::TextDisabled("%s", row.status.c_str());
       const float fraction = static_cast<float>(-e.expertise[static_cast<std::size_t>(m)] / worst);
       ImGui::PushStyleColor(ImGuiCol_PlotHistogram,
-                            drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));
+                            row.drilled ? ImVec4(1.0f, 0.6f, 0.3f, 1.0f) : ImVec4(0.36f, 0.6f, 1.0f, 1.0f));
       char overlay[32];
       std::snprintf(overlay, sizeof overlay, "%.2f", e.expertise[static_cast<std::size_t>(m)]);
-      ImGui::ProgressBar(std::max(0.02f, fraction), ImVec2(-1, 18 * sc), overlay);
+      ImGui::ProgressBar(std::max(0.02f, fraction), ImVec2(column, bar_height), overlay);
       ImGui::PopStyleColor();
+      ImGui::PopStyleVar();
       ImGui::EndGroup();
     }
     ImGui::EndChild();
