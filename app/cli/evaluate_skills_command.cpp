@@ -37,6 +37,7 @@
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
+#include "teaching/tasks/parking_idle_start.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
@@ -90,6 +91,7 @@ Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<Pa
                            std::uint64_t seed) {
   std::vector<DriveCondition> conditions = standard_drive_conditions();
   for (DriveCondition& c : path_following_conditions()) conditions.push_back(std::move(c));  // appended: same draws
+  for (DriveCondition& c : standing_start_conditions()) conditions.push_back(std::move(c));
   Json rows = Json::array();
   for (const AgreementRow& r : measure_drive_agreement(extractor, drives, conditions, seed)) {
     rows.push_back({{"condition", r.condition},
@@ -265,7 +267,8 @@ int run(const EvaluateArgs& args) {
     if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
-    const std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
+    // Read as the parking kit reads a learner's drive: from its first moving step (parking_idle_start.hpp).
+    const auto extractor = std::make_shared<ParkingIdleStartExtractor>(evaluation_extractor(args, model));
     report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
     report["expert_actions_at_limits"] = limits_row(drives);

@@ -23,6 +23,7 @@
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/segmentation_metrics.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_idle_start.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/writing_kit.hpp"
@@ -78,7 +79,10 @@ int run(const SegmentArgs& args) {
   const std::string task(to_string(args.task));
   if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
     throw InputError(args.trial, "not a " + task + " trial ($.task is not \"" + task + "\")");
-  const Chosen chosen = choose_extractor(args.task, args.model);
+  Chosen chosen = choose_extractor(args.task, args.model);
+  // A parking trial is read as the kit reads a learner's drive: from its first moving step (parking_idle_start.hpp).
+  std::shared_ptr<const SkillExtractor> extractor = std::move(chosen.extractor);
+  if (args.task == TaskKind::parking) extractor = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor));
 
   StepSequence steps;
   std::optional<ParkingTrial> parking;
@@ -98,7 +102,7 @@ int run(const SegmentArgs& args) {
   if (steps.length() == 0) throw InputError(args.trial, "trial has no steps to segment");
   Segmentation segmentation;
   try {
-    segmentation = chosen.extractor->extract(steps);
+    segmentation = extractor->extract(steps);
   } catch (const InputError& e) {
     throw InputError(args.trial, std::string(e.what()) + " (model " + chosen.model + ")");
   }
@@ -107,7 +111,7 @@ int run(const SegmentArgs& args) {
   out["task"] = args.task;
   out["file"] = args.trial;
   out["steps"] = steps.length();
-  out["extractor"] = chosen.extractor->name();
+  out["extractor"] = extractor->name();
   out["model"] = chosen.model.empty() ? Json(nullptr) : Json(chosen.model);
   if (!args.png.empty()) {
     const auto [width, height] = parse_size(args.size, "--size");

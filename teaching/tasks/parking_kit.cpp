@@ -7,6 +7,7 @@
 #include "engine/parking/parking_expert.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/parking_execution.hpp"
+#include "teaching/tasks/parking_idle_start.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -50,6 +51,7 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
 
 void ParkingKit::build(std::vector<ParkingTrial> pool) {
   if (!extractor_) throw InputError("parking kit", "no skill extractor");
+  extractor_ = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor_));
   if (pool.empty()) throw InputError("parking kit", "empty expert pool");
   demos_.reserve(pool.size());
   for (const ParkingTrial& t : pool) {

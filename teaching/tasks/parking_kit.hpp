@@ -34,8 +34,9 @@ std::filesystem::path default_parking_pool_file(GoalRegion region = GoalRegion::
 class ParkingKit final : public TaskKit {
  public:
   // Loads (or generates, see load_or_generate_parking_pool) the pool and segments it with `extractor`
-  // (any SkillExtractor: CompILE, or the time heuristic as a fallback). `extractor_notice` is passed
-  // through to extractor_notice().
+  // (any SkillExtractor: CompILE, or the time heuristic as a fallback), which extractor() wraps so that every
+  // drive is read from its first moving step (parking_idle_start.hpp). `extractor_notice` is passed through to
+  // extractor_notice().
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
              const ParkingKitOptions& options);
   // With a ready pool (tests, tools): every trial needs control-rate actions and T+1 states; `region` says

@@ -75,10 +75,13 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
                                 test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json rows = report_json_of(r.output).at("realistic_drivers");
-  ASSERT_EQ(rows.size(), 15u);  // 8 open loop, then 7 following the path
+  ASSERT_EQ(rows.size(), 18u);  // 8 open loop, 7 following the path, 3 with a standing start
   // 15 Hz input without noise or delay changes nothing a skill model sees, beyond the gamepad's dead zone.
   EXPECT_GE(rows[0].at("agreement").get<double>(), 0.9) << rows[0];
   EXPECT_NE(rows[8].at("condition").get<std::string>().find("follows the path"), std::string::npos) << rows[8];
+  // The expert's motion a reaction delay late, compared a delay later, agrees as the drive on time does.
+  EXPECT_EQ(rows[15].at("condition"), "gamepad, no noise, delay 0.2 s, 15 Hz");
+  EXPECT_DOUBLE_EQ(rows[15].at("agreement").get<double>(), rows[0].at("agreement").get<double>());
   const Json limits = report_json_of(r.output).at("expert_actions_at_limits");
   EXPECT_GT(limits.at("steps").get<int>(), 0) << limits;
   EXPECT_GE(limits.at("pedal").get<double>(), 0.0) << limits;

@@ -9,6 +9,7 @@
 
 #include "engine/core/error.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
 namespace {
@@ -40,6 +41,21 @@ TEST(ParkingKit, PoolIsSegmentedByTheExtractorAndTheTimeHeuristic) {
     EXPECT_TRUE(is_success_reward(d.reward)) << d.reward;  // the expert parks
     EXPECT_EQ(d.trial.at("source"), "expert");
   }
+}
+
+TEST(ParkingKit, ReadsALearnersDriveFromItsFirstMovingStep) {
+  // An expert drive after six steps of standing still, as a learner starts after the countdown.
+  const StepSequence moving = kit().expert_pool()[0].steps;
+  StepSequence late = moving;
+  for (int i = 0; i < 6; ++i)
+    late.states.insert(late.states.begin(), moving.states.begin(), moving.states.begin() + kParkingStateDim);
+  late.actions.insert(late.actions.begin(), 6 * kParkingActionDim, 0.0f);
+  ASSERT_EQ(late.length(), moving.length() + 6);
+  Segmentation expected = TimeHeuristicExtractor(3).extract(moving);
+  for (SkillSegment& s : expected.segments) s.begin += 6, s.end += 6;
+  expected.segments.front().begin = 0;
+  EXPECT_EQ(kit().extractor().extract(late), expected);
+  EXPECT_NE(TimeHeuristicExtractor(3).extract(late), expected);  // read whole, the thirds fall elsewhere
 }
 
 TEST(ParkingKit, SameSeedSamePoolOtherSeedOtherPool) {

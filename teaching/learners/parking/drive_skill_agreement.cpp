@@ -70,6 +70,21 @@ std::vector<DriveCondition> path_following_conditions() {
   return out;
 }
 
+std::vector<DriveCondition> standing_start_conditions() {
+  RealisticDriverProfile delayed;
+  delayed.stick_noise = 0.0;
+  delayed.reaction_delay_s = 0.2;
+  RealisticDriverProfile waiting;
+  waiting.stick_noise = 0.1;
+  waiting.reaction_delay_s = 0.2;
+  waiting.start_wait_s = 1.0;
+  RealisticDriverProfile following = waiting;
+  following.follows_path = true;
+  return {{"gamepad, no noise, delay 0.2 s, 15 Hz", delayed},
+          {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first, 15 Hz", waiting},
+          {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first, 15 Hz, follows the path", following}};
+}
+
 std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
                                                   const std::vector<ParkingTrial>& expert_drives,
                                                   const std::vector<DriveCondition>& conditions, std::uint64_t seed) {
@@ -90,7 +105,8 @@ std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extracto
       driven.push_back(parking_step_sequence(drive));
     }
     const std::vector<Segmentation> driven_skills = extractor.extract_all(driven);
-    const int shift = static_cast<int>(std::lround(condition.profile.reaction_delay_s * parking::kControlHz));
+    const int shift = static_cast<int>(
+        std::lround((condition.profile.reaction_delay_s + condition.profile.start_wait_s) * parking::kControlHz));
     for (std::size_t i = 0; i < driven.size(); ++i) {
       const StepAgreement a =
           step_agreement(clean_skills[i], clean[i].length(), driven_skills[i], driven[i].length(), shift);

@@ -3,8 +3,8 @@
 // of an expert drive (realistic_driver.hpp) against the skills of the clean drive, step by step.
 //
 // Spec. Agreement of one drive = the share of the clean drive's control steps t whose skill equals the
-// realistic drive's skill at step t + d, d = the driver's reaction delay in control steps (rounded): the
-// driver does at t + d what the expert did at t, so a skill model that follows the motion labels both
+// realistic drive's skill at step t + d, d = the driver's reaction delay plus its start wait in control steps
+// (rounded): the driver does at t + d what the expert did at t, so a skill model that follows the motion labels both
 // alike. Steps past the end of either drive do not count (a drive that collided early counts fewer
 // steps). A condition's agreement is step-weighted over its drives.
 #include <string>
@@ -45,6 +45,10 @@ std::vector<DriveCondition> standard_drive_conditions();
 // condition but the noiseless gamepad: the motion stays near the expert's, so the rows measure how the model
 // reads noisy, delayed and keyed input on the expert's motion rather than a drive that went elsewhere.
 std::vector<DriveCondition> path_following_conditions();
+// A standing start: the expert's drive a reaction delay late with no noise (the motion is the expert's, only
+// later), and noisy drivers who stand still for a second first, as a learner does after the countdown, open
+// loop and following the path. Kept apart from the lists above so that their rows keep their draws.
+std::vector<DriveCondition> standing_start_conditions();
 
 struct AgreementRow {
   std::string condition;

@@ -71,8 +71,9 @@ void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
   if (p.control_hz != parking::kControlHz && p.control_hz != parking::kSimulationHz)
     throw InputError("realistic driver", "control_hz must be 5 or 15, got " + std::to_string(p.control_hz));
   if (!(p.stick_noise >= 0.0) || !(p.reaction_delay_s >= 0.0) || !(p.noise_time_constant_s >= 0.0) ||
-      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s))
-    throw InputError("realistic driver", "noise, time constant and delay must be finite and >= 0");
+      !(p.start_wait_s >= 0.0) ||
+      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s + p.start_wait_s))
+    throw InputError("realistic driver", "noise, time constant, delay and start wait must be finite and >= 0");
 }
 
 }  // namespace
@@ -138,6 +139,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   check(expert, p);
   const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
   const int delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));  // input samples
+  const int wait = static_cast<int>(std::lround(p.start_wait_s * p.control_hz));
   const int late = static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz));
   std::vector<bool> braking =
       p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
@@ -158,11 +160,11 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
       p.follows_path ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
   const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
   std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
-  for (int k = 0; k < expert_samples + delay && !sim.done(); k += per_step) {
+  for (int k = 0; k < expert_samples + delay + wait && !sim.done(); k += per_step) {
     double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
     VehicleState car = sim.vehicle();
     for (int s = 0; s < per_step; ++s) {
-      const int source = k + s - delay;  // the expert's input sample the driver is reproducing
+      const int source = k + s - delay - wait;  // the expert's input sample the driver is reproducing
       if (follower) seen.push_back(car);
       ParkingAction intent{0.0, 0.0};
       if (source >= 0 && source < expert_samples) {
@@ -171,8 +173,8 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         braking_run = !braking.empty() && braking[step] ? braking_run + 1 : 0;
         if (follower) {
           // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
-          const ParkingAction d =
-              follower->correction(seen[static_cast<std::size_t>(source)], (source - delay) * substeps_per_sample);
+          const ParkingAction d = follower->correction(seen[static_cast<std::size_t>(source + wait)],
+                                                       (source - delay) * substeps_per_sample);
           intent = clip_action({intent[0] + d[0], intent[1] + d[1]});
         }
         if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;

@@ -53,6 +53,10 @@ struct RealisticDriverProfile {
   double stick_noise = 0.15;           // wander standard deviation, action units
   double noise_time_constant_s = 0.3;  // wander correlation time
   double reaction_delay_s = 0.2;       // >= 0
+  // Standing still before the first input, on top of the reaction delay (>= 0): a learner after the countdown.
+  // Open loop it only delays the drive further; a driver who follows the path still reacts after
+  // reaction_delay_s to what it sees.
+  double start_wait_s = 0.0;
   PlantedDeficit deficit = PlantedDeficit::None;
   bool follows_path = false;  // closes the loop on the expert's path (path_follower.hpp); draws no numbers
 };

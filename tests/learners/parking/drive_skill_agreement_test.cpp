@@ -95,5 +95,26 @@ TEST(DriveSkillAgreement, KeyedActionsOnTheCleanMotionChangeOnlyWhatAModelReadsF
   EXPECT_EQ(sign.agreed, 12);
 }
 
+TEST(DriveSkillAgreement, StandingStartConditionsShiftByTheWaitAndTheDelay) {
+  // The expert's own motion, later: a model that reads only the steering agrees on every compared step.
+  ParkingTrial drive;
+  drive.scenario = parking_pool_scenario(0, 0);
+  for (int i = 0; i < 8; ++i) drive.actions.push_back({0.8, -0.9});
+  for (int i = 0; i < 8; ++i) drive.actions.push_back({-0.8, 0.9});
+  const std::vector<DriveCondition> conditions = standing_start_conditions();
+  ASSERT_EQ(conditions.size(), 3u);
+  EXPECT_EQ(conditions[0].profile.stick_noise, 0.0);
+  EXPECT_EQ(conditions[1].profile.start_wait_s, 1.0);
+  EXPECT_TRUE(conditions[2].profile.follows_path);
+  const std::vector<AgreementRow> rows = measure_drive_agreement(SteeringSignExtractor(), {drive}, {conditions[0]}, 1);
+  EXPECT_EQ(rows[0].agreement.steps, 16);
+  EXPECT_EQ(rows[0].agreement.agreed, 16);
+  DriveCondition waiting = conditions[0];
+  waiting.profile.start_wait_s = 1.0;
+  const std::vector<AgreementRow> waited = measure_drive_agreement(SteeringSignExtractor(), {drive}, {waiting}, 1);
+  EXPECT_EQ(waited[0].agreement.steps, 16);
+  EXPECT_EQ(waited[0].agreement.agreed, 16);
+}
+
 }  // namespace
 }  // namespace sc

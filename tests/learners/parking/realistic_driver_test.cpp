@@ -94,6 +94,22 @@ TEST(RealisticDriver, ReactionDelayShiftsTheExpertsActions) {
   for (std::size_t t = 2; t < d.actions.size(); ++t) EXPECT_NEAR(d.actions[t][0], e.actions[t - 2][0], 1e-9) << t;
 }
 
+TEST(RealisticDriver, AStartWaitStandsStillFirstThenDrivesTheSameMotion) {
+  RealisticDriverProfile p = clean(DriveDevice::Gamepad, 15);
+  p.reaction_delay_s = 0.2;
+  Rng a(1), b(1);
+  const ParkingTrial e = expert_drive();
+  const ParkingTrial late = realistic_drive(e, p, a);
+  p.start_wait_s = 1.0;  // five more control steps
+  const ParkingTrial waited = realistic_drive(e, p, b);
+  ASSERT_EQ(waited.states.size(), late.states.size() + 5);
+  for (std::size_t t = 0; t <= 5; ++t) EXPECT_EQ(waited.states[t], late.states[0]) << t;
+  for (std::size_t t = 0; t < late.states.size(); ++t)
+    for (std::size_t d = 0; d < 6; ++d) EXPECT_NEAR(waited.states[t + 5][d], late.states[t][d], 1e-12) << t;
+  p.start_wait_s = -1.0;
+  EXPECT_THROW(realistic_drive(e, p, a), InputError);
+}
+
 TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
   const ParkingTrial e = expert_drive();
   RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 15);

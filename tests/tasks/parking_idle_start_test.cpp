@@ -1,0 +1,102 @@
+#include "teaching/tasks/parking_idle_start.hpp"
+
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "engine/core/error.hpp"
+#include "engine/parking/parking_sim.hpp"
+#include "teaching/tasks/parking_expert_pool.hpp"
+#include "teaching/tasks/parking_steps.hpp"
+
+namespace sc {
+namespace {
+
+// `standing` control steps with the pedal at `idle_pedal`, then forward with a left turn and reversing.
+StepSequence drive(int standing, double idle_pedal = 0.0) {
+  ParkingSim sim(parking_pool_scenario(0, 0));
+  std::vector<ParkingObservation> states{sim.observation()};
+  std::vector<ParkingAction> actions;
+  for (int i = 0; i < standing; ++i) actions.push_back({idle_pedal, 0.0});
+  for (int i = 0; i < 6; ++i) actions.push_back({0.9, 0.4});
+  for (int i = 0; i < 6; ++i) actions.push_back({-0.9, -0.4});
+  for (const ParkingAction& u : actions) {
+    sim.step(u);
+    states.push_back(sim.observation());
+  }
+  return parking_step_sequence(states, actions);
+}
+
+// Labels each step by the sign of its pedal (0: forward, 1: none, 2: backward), and records what it was given.
+class PedalSignExtractor final : public SkillExtractor {
+ public:
+  Segmentation extract(const StepSequence& x) const override {
+    lengths.push_back(x.length());
+    Segmentation out;
+    for (int t = 0; t < x.length(); ++t) {
+      const float u0 = x.actions[static_cast<std::size_t>(t * x.action_dim)];
+      const int skill = u0 > 0.1f ? 0 : u0 < -0.1f ? 2 : 1;
+      if (!out.segments.empty() && out.segments.back().skill == skill)
+        out.segments.back().end = t + 1;
+      else
+        out.segments.push_back({skill, t, t + 1});
+    }
+    return out;
+  }
+  int num_skills() const override { return 3; }
+  std::string name() const override { return "pedal-sign"; }
+  mutable std::vector<int> lengths;
+};
+
+TEST(ParkingIdleStart, CountsTheStepsBeforeTheCarMoves) {
+  EXPECT_EQ(idle_start_steps(drive(0)), 0);  // 0.9 pedal: 0.9 m/s after the first step
+  EXPECT_EQ(idle_start_steps(drive(3)), 3);
+  // A pedal resting at 0.2 creeps: 0.2, 0.4, then 0.6 m/s, moving from the third step on.
+  EXPECT_EQ(idle_start_steps(drive(4, 0.2)), 2);
+}
+
+TEST(ParkingIdleStart, NeverTheWholeDriveNorADriveOfAnotherTask) {
+  StepSequence still = drive(5);
+  still.states.resize(5 * kParkingStateDim);
+  still.actions.resize(5 * kParkingActionDim);
+  EXPECT_EQ(idle_start_steps(still), 4);
+  StepSequence writing;
+  writing.state_dim = 2;
+  writing.action_dim = 2;
+  writing.states.assign(8, 0.0f);
+  writing.actions.assign(8, 0.0f);
+  EXPECT_EQ(idle_start_steps(writing), 0);
+}
+
+TEST(ParkingIdleStart, SegmentsFromTheFirstMovingStepAndGivesTheStandingStartToTheFirstSkill) {
+  auto inner = std::make_shared<PedalSignExtractor>();
+  const ParkingIdleStartExtractor extractor(inner);
+  const Segmentation s = extractor.extract(drive(3));
+  EXPECT_EQ(inner->lengths, std::vector<int>{12});  // the 3 standing steps were not read
+  ASSERT_EQ(s.segments.size(), 2u);
+  EXPECT_EQ(s.segments[0], (SkillSegment{0, 0, 9}));
+  EXPECT_EQ(s.segments[1], (SkillSegment{2, 9, 15}));
+  // Read whole, the standing start is a skill of its own ("no pedal") before the manoeuvre's.
+  EXPECT_EQ(inner->extract(drive(3)).segments.size(), 3u);
+}
+
+TEST(ParkingIdleStart, ADriveThatMovesAtOnceIsReadAsTheWrappedExtractorReadsIt) {
+  auto inner = std::make_shared<PedalSignExtractor>();
+  const ParkingIdleStartExtractor extractor(inner);
+  EXPECT_EQ(extractor.extract(drive(0)), inner->extract(drive(0)));
+  EXPECT_EQ(extractor.name(), "pedal-sign");
+  EXPECT_EQ(extractor.num_skills(), 3);
+}
+
+TEST(ParkingIdleStart, ExtractAllAgreesWithExtract) {
+  const ParkingIdleStartExtractor extractor(std::make_shared<PedalSignExtractor>());
+  const std::vector<StepSequence> drives{drive(0), drive(2), drive(5, 0.05)};
+  const std::vector<Segmentation> all = extractor.extract_all(drives);
+  ASSERT_EQ(all.size(), drives.size());
+  for (std::size_t i = 0; i < drives.size(); ++i) EXPECT_EQ(all[i], extractor.extract(drives[i])) << i;
+}
+
+TEST(ParkingIdleStart, RefusesToWrapNothing) { EXPECT_THROW(ParkingIdleStartExtractor(nullptr), InputError); }
+
+}  // namespace
+}  // namespace sc
