@@ -8,6 +8,7 @@
 #include "engine/parking/parking_sim.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "tests/support/action_sign_extractor.hpp"
 
 namespace sc {
 namespace {
@@ -26,27 +27,6 @@ StepSequence drive(int standing, double idle_pedal = 0.0) {
   }
   return parking_step_sequence(states, actions);
 }
-
-// Labels each step by the sign of its pedal (0: forward, 1: none, 2: backward), and records what it was given.
-class PedalSignExtractor final : public SkillExtractor {
- public:
-  Segmentation extract(const StepSequence& x) const override {
-    lengths.push_back(x.length());
-    Segmentation out;
-    for (int t = 0; t < x.length(); ++t) {
-      const float u0 = x.actions[static_cast<std::size_t>(t * x.action_dim)];
-      const int skill = u0 > 0.1f ? 0 : u0 < -0.1f ? 2 : 1;
-      if (!out.segments.empty() && out.segments.back().skill == skill)
-        out.segments.back().end = t + 1;
-      else
-        out.segments.push_back({skill, t, t + 1});
-    }
-    return out;
-  }
-  int num_skills() const override { return 3; }
-  std::string name() const override { return "pedal-sign"; }
-  mutable std::vector<int> lengths;
-};
 
 TEST(ParkingIdleStart, CountsTheStepsBeforeTheCarMoves) {
   EXPECT_EQ(idle_start_steps(drive(0)), 0);  // 0.9 pedal: 0.9 m/s after the first step
@@ -69,19 +49,19 @@ TEST(ParkingIdleStart, NeverTheWholeDriveNorADriveOfAnotherTask) {
 }
 
 TEST(ParkingIdleStart, SegmentsFromTheFirstMovingStepAndGivesTheStandingStartToTheFirstSkill) {
-  auto inner = std::make_shared<PedalSignExtractor>();
+  auto inner = std::make_shared<test::ActionSignExtractor>(0);
   const ParkingIdleStartExtractor extractor(inner);
   const Segmentation s = extractor.extract(drive(3));
   EXPECT_EQ(inner->lengths, std::vector<int>{12});  // the 3 standing steps were not read
   ASSERT_EQ(s.segments.size(), 2u);
-  EXPECT_EQ(s.segments[0], (SkillSegment{0, 0, 9}));
-  EXPECT_EQ(s.segments[1], (SkillSegment{2, 9, 15}));
+  EXPECT_EQ(s.segments[0], (SkillSegment{2, 0, 9}));   // forward (pedal above +0.1)
+  EXPECT_EQ(s.segments[1], (SkillSegment{0, 9, 15}));  // backward
   // Read whole, the standing start is a skill of its own ("no pedal") before the manoeuvre's.
   EXPECT_EQ(inner->extract(drive(3)).segments.size(), 3u);
 }
 
 TEST(ParkingIdleStart, ADriveThatMovesAtOnceIsReadAsTheWrappedExtractorReadsIt) {
-  auto inner = std::make_shared<PedalSignExtractor>();
+  auto inner = std::make_shared<test::ActionSignExtractor>(0);
   const ParkingIdleStartExtractor extractor(inner);
   EXPECT_EQ(extractor.extract(drive(0)), inner->extract(drive(0)));
   EXPECT_EQ(extractor.name(), "pedal-sign");
@@ -89,7 +69,7 @@ TEST(ParkingIdleStart, ADriveThatMovesAtOnceIsReadAsTheWrappedExtractorReadsIt) 
 }
 
 TEST(ParkingIdleStart, ExtractAllAgreesWithExtract) {
-  const ParkingIdleStartExtractor extractor(std::make_shared<PedalSignExtractor>());
+  const ParkingIdleStartExtractor extractor(std::make_shared<test::ActionSignExtractor>(0));
   const std::vector<StepSequence> drives{drive(0), drive(2), drive(5, 0.05)};
   const std::vector<Segmentation> all = extractor.extract_all(drives);
   ASSERT_EQ(all.size(), drives.size());

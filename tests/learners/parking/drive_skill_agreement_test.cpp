@@ -4,6 +4,7 @@
 
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
+#include "tests/support/action_sign_extractor.hpp"
 
 namespace sc {
 namespace {
@@ -61,24 +62,8 @@ TEST(DriveSkillAgreement, PathFollowingConditionsAreTheNoisyOrKeyedStandardOnesW
   for (const DriveCondition& c : standard) EXPECT_FALSE(c.profile.follows_path) << c.name;
 }
 
-// Labels each step by the sign of its steering action (left, straight, right): a model that reads actions.
-class SteeringSignExtractor final : public SkillExtractor {
- public:
-  Segmentation extract(const StepSequence& x) const override {
-    Segmentation out;
-    for (int t = 0; t < x.length(); ++t) {
-      const float u1 = x.actions[static_cast<std::size_t>(t * x.action_dim + 1)];
-      const int skill = u1 < -0.1f ? 0 : u1 > 0.1f ? 2 : 1;
-      if (!out.segments.empty() && out.segments.back().skill == skill)
-        out.segments.back().end = t + 1;
-      else
-        out.segments.push_back({skill, t, t + 1});
-    }
-    return out;
-  }
-  int num_skills() const override { return 3; }
-  std::string name() const override { return "steering-sign"; }
-};
+// Reads the steering's sign (left, straight, right): a model that reads actions.
+test::ActionSignExtractor SteeringSignExtractor() { return test::ActionSignExtractor(1); }
 
 TEST(DriveSkillAgreement, KeyedActionsOnTheCleanMotionChangeOnlyWhatAModelReadsFromActions) {
   ParkingTrial drive;
