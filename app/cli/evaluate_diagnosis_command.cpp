@@ -6,6 +6,8 @@
 // --noise-floor prints the learners' segment scores instead (the noise floor the noise-only learners give
 // quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
+// --start-wait S makes every learner stand still S seconds first; --read-whole-drives reads drives with their
+// standing start (ParkingKitOptions::read_whole_drives).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -35,15 +37,17 @@ struct EvaluateDiagnosisArgs {
   bool details = false;
   bool noise_floor = false;
   std::optional<double> apply_noise_floor;
+  double start_wait = 0.0;
+  bool read_whole_drives = false;
 };
 
 // Each deficit's learners' segment scores against the noise-only learners' floor.
-void print_noise_floor(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
+void print_noise_floor(const ParkingKit& kit, const PlantedLearners& run, const EvaluateDiagnosisArgs& args) {
   std::optional<double> floor;
   for (PlantedDeficit d : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
                            PlantedDeficit::LateBraking}) {
     std::vector<std::vector<Json>> learners;
-    for (int i = 0; i < args.learners; ++i) learners.push_back(planted_learner_trials(kit, pretest, d, args.seed, i));
+    for (int i = 0; i < args.learners; ++i) learners.push_back(planted_learner_trials(kit, run, d, i));
     const NoiseFloorCalibration c = calibrate_noise_floor(kit, learners);
     if (!floor) {
       floor = c.floor();
@@ -59,14 +63,14 @@ void print_noise_floor(const ParkingKit& kit, const std::vector<int>& pretest, c
 
 // Every learner's first targets (deficit skills starred) with their expertise per trial (0.000: no penalty, placed
 // by the ranking's tie-break), for each deficit and mode, to see what goes wrong.
-void print_details(const ParkingKit& kit, const std::vector<int>& pretest, const EvaluateDiagnosisArgs& args) {
+void print_details(const ParkingKit& kit, const PlantedLearners& run, const EvaluateDiagnosisArgs& args) {
   for (PlantedDeficit d : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
                            PlantedDeficit::LateBraking})
     for (ExpertiseMode mode : {ExpertiseMode::Alg2, ExpertiseMode::QualityAware}) {
       const std::vector<int> spoiled = deficit_skills(d, kit.skill_motions());
       std::printf("%s, %s:\n", deficit_name(d).c_str(), mode == ExpertiseMode::Alg2 ? "Alg. 2" : "quality-aware");
       for (int i = 0; i < args.learners; ++i) {
-        const LearnerOutcome o = diagnose_planted_learner(kit, pretest, d, mode, args.seed, i);
+        const LearnerOutcome o = diagnose_planted_learner(kit, run, d, mode, i);
         std::printf("  learner %2d (%s): weakest E/trial %7.3f, targets", i,
                     device_name(static_cast<DriveDevice>(i % 3)).c_str(), o.weakest_per_trial);
         for (std::size_t k = 0; k < o.targets.size() && k < 5; ++k) {
@@ -88,20 +92,24 @@ std::string skill_list(const std::vector<int>& skills) {
 
 int run(const EvaluateDiagnosisArgs& args) {
   if (args.task != TaskKind::parking) throw InputError("evaluate-diagnosis", "only --task parking is measured here");
-  const std::unique_ptr<TaskKit> base = make_parking_kit(args.model, GoalRegion::WholeLot, args.apply_noise_floor);
+  const std::unique_ptr<TaskKit> base =
+      make_parking_kit(args.model, GoalRegion::WholeLot, args.apply_noise_floor, args.read_whole_drives);
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
-  const std::vector<int> pretest = select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios();
-  std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives\n",
-              kit->extractor().name().c_str(), args.learners, args.seed, pretest.size());
+  const PlantedLearners run{select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
+                            args.seed, args.start_wait};
+  std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives",
+              kit->extractor().name().c_str(), args.learners, args.seed, run.pretest.size());
+  if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);
+  std::printf("%s\n", args.read_whole_drives ? ", drives read whole (standing start included)" : "");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
                 skill_list(deficit_skills(d, kit->skill_motions())).c_str());
   std::printf("quiet thresholds (expertise per pre-test trial): Alg. 2 %.3f, quality-aware %.3f\n\n",
               kQuietExpertiseAlg2, kQuietExpertiseQualityAware);
   if (args.noise_floor) {
-    print_noise_floor(*kit, pretest, args);
+    print_noise_floor(*kit, run, args);
     return 0;
   }
   if (args.details) {
@@ -113,14 +121,14 @@ int run(const EvaluateDiagnosisArgs& args) {
           m, kit->describe_skill(m).c_str(), s.steps, s.mean_speed, s.mean_acceleration, 100 * s.reverse_fraction,
           100 * s.sharp_fraction, 100 * s.braking_fraction);
     }
-    print_details(*kit, pretest, args);
+    print_details(*kit, run, args);
     return 0;
   }
   std::printf(
       "| planted deficit | expertise | deficit skills fill the top targets | first target a deficit skill | no skill "
       "below the threshold |\n");
   std::printf("|---|---|---|---|---|\n");
-  for (const RecoveryRow& r : planted_deficit_table(*kit, pretest, args.learners, args.seed)) {
+  for (const RecoveryRow& r : planted_deficit_table(*kit, run, args.learners)) {
     const bool planted = r.deficit != PlantedDeficit::None;
     auto share = [&](int n) { return std::to_string(n) + " / " + std::to_string(r.learners); };
     std::printf("| %s | %s | %s | %s | %s |\n", deficit_name(r.deficit).c_str(), mode_name(r.mode),
@@ -153,6 +161,13 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   sub.add_option("--apply-noise-floor", args->apply_noise_floor,
                  "Measure with this noise floor in quality-aware expertise (<= 0; the shipped parking kit uses none)")
       ->check(CLI::Range(-10.0, 0.0));
+  sub.add_option("--start-wait", args->start_wait,
+                 "Every learner stands still this many seconds before its first input, as after the trainer's "
+                 "countdown (0: after its reaction delay only, the tables' learners)")
+      ->check(CLI::Range(0.0, 10.0));
+  sub.add_flag("--read-whole-drives", args->read_whole_drives,
+               "Research: read each drive from its first step, a standing start included, as before 2026-12-05 "
+               "(the kit reads from the first moving step; docs/skills.md, \"A standing start\")");
   return [args] { return run(*args); };
 }
 

@@ -10,7 +10,9 @@
 // --noise-floor calibrates quality-aware expertise's noise floor on the noise-only learners
 // (execution_noise_floor.hpp).
 // --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
-// drives' (docs/skills.md, "Robustness on realistic learners"), open loop and following the path. --readout-phases P
+// drives' (docs/skills.md, "Robustness on realistic learners"), open loop, following the path and from a standing
+// start, each copy read from its first moving step as the parking kit reads it (--read-whole-drives: read whole, as
+// before 2026-12-05). --readout-phases P
 // reads the model at P phases of its resampling instead of the file's number (phase_vote.hpp), for every table.
 #include <CLI/CLI.hpp>
 
@@ -66,6 +68,7 @@ struct EvaluateArgs {
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
+  bool read_whole_drives = false;
   std::optional<int> readout_phases;  // instead of the model file's (CompileConfig::readout_phases)
 };
 
@@ -268,7 +271,8 @@ int run(const EvaluateArgs& args) {
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
     // Read as the parking kit reads a learner's drive: from its first moving step (parking_idle_start.hpp).
-    const auto extractor = std::make_shared<ParkingIdleStartExtractor>(evaluation_extractor(args, model));
+    std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
+    if (!args.read_whole_drives) extractor = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor));
     report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
     report["expert_actions_at_limits"] = limits_row(drives);
@@ -291,9 +295,14 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
       ->check(CLI::Range(1, 100000));
   sub.add_option("--seed", args->seed,
                  "Seed of the generated demonstrations (default: the model's seed + 1; 1 with --time-heuristic)");
-  sub.add_flag("--realistic-drivers", args->realistic_drivers,
-               "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
-               "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
+  auto* realistic =
+      sub.add_flag("--realistic-drivers", args->realistic_drivers,
+                   "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
+                   "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
+  sub.add_flag("--read-whole-drives", args->read_whole_drives,
+               "Research, with --realistic-drivers: read each copy from its first step, a standing start included, as "
+               "before 2026-12-05 (docs/skills.md, \"A standing start\")")
+      ->needs(realistic);
   sub.add_flag("--details", args->details,
                "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");
   sub.add_flag("--robustness", args->robustness,

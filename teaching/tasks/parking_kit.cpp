@@ -33,7 +33,8 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
     : extractor_(std::move(extractor)),
       extractor_notice_(std::move(extractor_notice)),
       region_(options.pool.region),
-      noise_floor_(options.execution_noise_floor) {
+      noise_floor_(options.execution_noise_floor),
+      read_whole_drives_(options.read_whole_drives) {
   if (options.pool_file.empty()) {
     build(generate_parking_pool(options.pool));
     return;
@@ -51,7 +52,7 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
 
 void ParkingKit::build(std::vector<ParkingTrial> pool) {
   if (!extractor_) throw InputError("parking kit", "no skill extractor");
-  extractor_ = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor_));
+  if (!read_whole_drives_) extractor_ = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor_));
   if (pool.empty()) throw InputError("parking kit", "empty expert pool");
   demos_.reserve(pool.size());
   for (const ParkingTrial& t : pool) {

@@ -26,6 +26,9 @@ struct ParkingKitOptions {
   // within what noise does (docs/skills.md, "Quality-aware expertise"); `evaluate-diagnosis
   // --apply-noise-floor` measures it.
   std::optional<NoiseFloor> execution_noise_floor;
+  // Research: read every drive from its first step, a standing start included, as before 2026-12-05
+  // (parking_idle_start.hpp says why the kit does not); `--read-whole-drives` of the evaluate commands.
+  bool read_whole_drives = false;
 };
 
 // asset_dir()/experts/parking_pool.json, or parking_pool_study_corner.json for the study corner.
@@ -35,8 +38,8 @@ class ParkingKit final : public TaskKit {
  public:
   // Loads (or generates, see load_or_generate_parking_pool) the pool and segments it with `extractor`
   // (any SkillExtractor: CompILE, or the time heuristic as a fallback), which extractor() wraps so that every
-  // drive is read from its first moving step (parking_idle_start.hpp). `extractor_notice` is passed through to
-  // extractor_notice().
+  // drive is read from its first moving step (parking_idle_start.hpp; unless options.read_whole_drives).
+  // `extractor_notice` is passed through to extractor_notice().
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
              const ParkingKitOptions& options);
   // With a ready pool (tests, tools): every trial needs control-rate actions and T+1 states; `region` says
@@ -93,6 +96,7 @@ class ParkingKit final : public TaskKit {
   std::string pool_notice_;
   GoalRegion region_ = GoalRegion::WholeLot;
   std::optional<NoiseFloor> noise_floor_;
+  bool read_whole_drives_ = false;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

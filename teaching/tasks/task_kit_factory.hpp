@@ -23,7 +23,8 @@ std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::pat
 // The parking kit make_task_kit builds, with quality-aware expertise's noise floor set (research:
 // `evaluate-diagnosis --apply-noise-floor`; the shipped kit uses none, ParkingKitOptions).
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
-                                          std::optional<NoiseFloor> execution_noise_floor);
+                                          std::optional<NoiseFloor> execution_noise_floor,
+                                          bool read_whole_drives = false);
 // A writing kit (default options) for `extractor`, with the noise floor recorded with `model`
 // (writing_noise_floor.hpp; none when `model` is empty or records none): what make_task_kit builds for writing,
 // for callers that choose the extractor themselves (evaluate-skills, tests).

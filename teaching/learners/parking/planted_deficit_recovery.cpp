@@ -23,13 +23,15 @@ std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<Parkin
   return out;
 }
 
-std::vector<Json> planted_learner_trials(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
-                                         std::uint64_t seed, int learner) {
-  const Rng learner_rng = Rng(seed).fork(static_cast<std::uint64_t>(learner));
+std::vector<Json> planted_learner_trials(const ParkingKit& kit, const PlantedLearners& run, PlantedDeficit deficit,
+                                         int learner) {
+  const std::vector<int>& pretest = run.pretest;
+  const Rng learner_rng = Rng(run.seed).fork(static_cast<std::uint64_t>(learner));
   Rng profile_rng = learner_rng;
   const DriveDevice device = static_cast<DriveDevice>(learner % 3);
   RealisticDriverProfile profile = sample_novice_profile(device, profile_rng);
   profile.deficit = deficit;
+  profile.start_wait_s = run.start_wait_s;
   std::vector<Json> trials;
   for (std::size_t k = 0; k < pretest.size(); ++k) {
     const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;
@@ -40,10 +42,10 @@ std::vector<Json> planted_learner_trials(const ParkingKit& kit, const std::vecto
   return trials;
 }
 
-LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
-                                        ExpertiseMode mode, std::uint64_t seed, int learner) {
-  const std::vector<Json> trials = planted_learner_trials(kit, pretest, deficit, seed, learner);
-  const Diagnosis d = diagnose_trials(kit, trials, seed, mode);
+LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const PlantedLearners& run, PlantedDeficit deficit,
+                                        ExpertiseMode mode, int learner) {
+  const std::vector<Json> trials = planted_learner_trials(kit, run, deficit, learner);
+  const Diagnosis d = diagnose_trials(kit, trials, run.seed, mode);
   LearnerOutcome out;
   out.targets = d.expertise.targets;
   const double n = std::max<double>(1.0, static_cast<double>(trials.size()));
@@ -60,8 +62,7 @@ LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector
   return out;
 }
 
-std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const std::vector<int>& pretest, int learners,
-                                               std::uint64_t seed) {
+std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const PlantedLearners& run, int learners) {
   std::vector<RecoveryRow> rows;
   for (PlantedDeficit deficit : {PlantedDeficit::None, PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering,
                                  PlantedDeficit::LateBraking}) {
@@ -69,7 +70,7 @@ std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const std:
       RecoveryRow row{deficit, mode, learners, 0, 0, 0};
       const std::vector<int> spoiled = deficit_skills(deficit, kit.skill_motions());
       for (int i = 0; i < learners; ++i) {
-        const LearnerOutcome o = diagnose_planted_learner(kit, pretest, deficit, mode, seed, i);
+        const LearnerOutcome o = diagnose_planted_learner(kit, run, deficit, mode, i);
         row.recovered += o.recovered;
         row.quiet += o.quiet;
         row.top1 += !o.targets.empty() && std::find(spoiled.begin(), spoiled.end(), o.targets.front()) != spoiled.end();

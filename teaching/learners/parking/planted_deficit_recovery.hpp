@@ -38,20 +38,28 @@ std::vector<int> deficit_skills(PlantedDeficit deficit, const std::vector<Parkin
 struct LearnerOutcome {
   std::vector<int> targets;
   std::vector<double> target_per_trial;  // each target's E_m / trials (0: no penalty, the ranking's tie-break)
-  double weakest_per_trial = 0.0;  // min over ranked skills of E_m / trials (0 when none ranked)
-  int deficit_skills_seen = 0;     // deficit skills among the ranked (pre-test) skills
-  bool recovered = false;          // see the spec (false for PlantedDeficit::None)
-  bool quiet = false;              // weakest_per_trial >= the mode's threshold
+  double weakest_per_trial = 0.0;        // min over ranked skills of E_m / trials (0 when none ranked)
+  int deficit_skills_seen = 0;           // deficit skills among the ranked (pre-test) skills
+  bool recovered = false;                // see the spec (false for PlantedDeficit::None)
+  bool quiet = false;                    // weakest_per_trial >= the mode's threshold
 };
 
-// Learner `learner`'s pre-test trials (documents), as the spec above drives them. `pretest`: indices into the
-// kit's pool.
-std::vector<Json> planted_learner_trials(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
-                                         std::uint64_t seed, int learner);
+// Who the learners of a run are: the pre-test they take (indices into the kit's pool), the seed S of their draws,
+// and how long each stands still before its first input (RealisticDriverProfile::start_wait_s; drawn from
+// nothing, so every other draw stays the same). The tables' learners start after their reaction delay only.
+struct PlantedLearners {
+  std::vector<int> pretest;
+  std::uint64_t seed = 0;
+  double start_wait_s = 0.0;
+};
+
+// Learner `learner`'s pre-test trials (documents), as the spec above drives them.
+std::vector<Json> planted_learner_trials(const ParkingKit& kit, const PlantedLearners& run, PlantedDeficit deficit,
+                                         int learner);
 
 // One learner's diagnosis.
-LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const std::vector<int>& pretest, PlantedDeficit deficit,
-                                        ExpertiseMode mode, std::uint64_t seed, int learner);
+LearnerOutcome diagnose_planted_learner(const ParkingKit& kit, const PlantedLearners& run, PlantedDeficit deficit,
+                                        ExpertiseMode mode, int learner);
 
 struct RecoveryRow {
   PlantedDeficit deficit = PlantedDeficit::None;
@@ -63,7 +71,6 @@ struct RecoveryRow {
 };
 
 // Learners 0..learners-1 for every deficit (None, NeverReversing, WeakSteering, LateBraking) x mode.
-std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const std::vector<int>& pretest, int learners,
-                                               std::uint64_t seed);
+std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const PlantedLearners& run, int learners);
 
 }  // namespace sc
