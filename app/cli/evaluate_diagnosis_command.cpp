@@ -6,8 +6,8 @@
 // --noise-floor prints the learners' segment scores instead (the noise floor the noise-only learners give
 // quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
-// --start-wait S makes every learner stand still S seconds first; --read-whole-drives reads drives with their
-// standing start (ParkingKitOptions::read_whole_drives).
+// --start-wait S / --end-wait S make every learner stand still S seconds before / after driving;
+// --read-whole-drives reads drives with that standing still (ParkingKitOptions::read_whole_drives).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -38,6 +38,7 @@ struct EvaluateDiagnosisArgs {
   bool noise_floor = false;
   std::optional<double> apply_noise_floor;
   double start_wait = 0.0;
+  double end_wait = 0.0;
   bool read_whole_drives = false;
 };
 
@@ -98,11 +99,12 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const PlantedLearners run{select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
-                            args.seed, args.start_wait};
+                            args.seed, args.start_wait, args.end_wait};
   std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives",
               kit->extractor().name().c_str(), args.learners, args.seed, run.pretest.size());
   if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);
-  std::printf("%s\n", args.read_whole_drives ? ", drives read whole (standing start included)" : "");
+  if (args.end_wait > 0.0) std::printf(", standing %.1f s after driving", args.end_wait);
+  std::printf("%s\n", args.read_whole_drives ? ", drives read whole (standing still included)" : "");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
                 skill_list(deficit_skills(d, kit->skill_motions())).c_str());
@@ -165,9 +167,13 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
                  "Every learner stands still this many seconds before its first input, as after the trainer's "
                  "countdown (0: after its reaction delay only, the tables' learners)")
       ->check(CLI::Range(0.0, 10.0));
+  sub.add_option("--end-wait", args->end_wait,
+                 "Every learner brakes to a standstill after its last input and stands this many seconds, as one who "
+                 "has given up on the spot does until the trainer's time limit")
+      ->check(CLI::Range(0.0, 20.0));
   sub.add_flag("--read-whole-drives", args->read_whole_drives,
-               "Research: read each drive from its first step, a standing start included, as before 2026-12-05 "
-               "(the kit reads from the first moving step; docs/skills.md, \"A standing start\")");
+               "Research: read each drive whole, standing still at its ends included, as before 2026-12-05 "
+               "(the kit reads from the first to the last moving step; docs/skills.md, \"A standing start\")");
   return [args] { return run(*args); };
 }
 

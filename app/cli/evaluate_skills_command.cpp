@@ -10,9 +10,9 @@
 // --noise-floor calibrates quality-aware expertise's noise floor on the noise-only learners
 // (execution_noise_floor.hpp).
 // --realistic-drivers (parking): the skills of realistic drivers' copies of the drives against the clean
-// drives' (docs/skills.md, "Robustness on realistic learners"), open loop, following the path and from a standing
-// start, each copy read from its first moving step as the parking kit reads it (--read-whole-drives: read whole, as
-// before 2026-12-05). --readout-phases P
+// drives' (docs/skills.md, "Robustness on realistic learners"), open loop, following the path and standing still at
+// the start or end, each copy read from its first to its last moving step as the parking kit reads it
+// (--read-whole-drives: read whole, as before 2026-12-05). --readout-phases P
 // reads the model at P phases of its resampling instead of the file's number (phase_vote.hpp), for every table.
 #include <CLI/CLI.hpp>
 
@@ -39,7 +39,7 @@
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
-#include "teaching/tasks/parking_idle_start.hpp"
+#include "teaching/tasks/parking_moving_part.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
@@ -270,9 +270,9 @@ int run(const EvaluateArgs& args) {
     if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
-    // Read as the parking kit reads a learner's drive: from its first moving step (parking_idle_start.hpp).
+    // Read as the parking kit reads a learner's drive: its moving part (parking_moving_part.hpp).
     std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
-    if (!args.read_whole_drives) extractor = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor));
+    if (!args.read_whole_drives) extractor = std::make_shared<ParkingMovingPartExtractor>(std::move(extractor));
     report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
     report["expert_actions_at_limits"] = limits_row(drives);
@@ -300,7 +300,7 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
                    "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
                    "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
   sub.add_flag("--read-whole-drives", args->read_whole_drives,
-               "Research, with --realistic-drivers: read each copy from its first step, a standing start included, as "
+               "Research, with --realistic-drivers: read each copy whole, standing still at its ends included, as "
                "before 2026-12-05 (docs/skills.md, \"A standing start\")")
       ->needs(realistic);
   sub.add_flag("--details", args->details,

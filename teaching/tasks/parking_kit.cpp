@@ -7,7 +7,7 @@
 #include "engine/parking/parking_expert.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/parking_execution.hpp"
-#include "teaching/tasks/parking_idle_start.hpp"
+#include "teaching/tasks/parking_moving_part.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -52,7 +52,7 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
 
 void ParkingKit::build(std::vector<ParkingTrial> pool) {
   if (!extractor_) throw InputError("parking kit", "no skill extractor");
-  if (!read_whole_drives_) extractor_ = std::make_shared<ParkingIdleStartExtractor>(std::move(extractor_));
+  if (!read_whole_drives_) extractor_ = std::make_shared<ParkingMovingPartExtractor>(std::move(extractor_));
   if (pool.empty()) throw InputError("parking kit", "empty expert pool");
   demos_.reserve(pool.size());
   for (const ParkingTrial& t : pool) {

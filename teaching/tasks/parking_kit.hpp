@@ -26,8 +26,8 @@ struct ParkingKitOptions {
   // within what noise does (docs/skills.md, "Quality-aware expertise"); `evaluate-diagnosis
   // --apply-noise-floor` measures it.
   std::optional<NoiseFloor> execution_noise_floor;
-  // Research: read every drive from its first step, a standing start included, as before 2026-12-05
-  // (parking_idle_start.hpp says why the kit does not); `--read-whole-drives` of the evaluate commands.
+  // Research: read every drive whole, standing still at its ends included, as before 2026-12-05
+  // (parking_moving_part.hpp says why the kit does not); `--read-whole-drives` of the evaluate commands.
   bool read_whole_drives = false;
 };
 
@@ -38,7 +38,7 @@ class ParkingKit final : public TaskKit {
  public:
   // Loads (or generates, see load_or_generate_parking_pool) the pool and segments it with `extractor`
   // (any SkillExtractor: CompILE, or the time heuristic as a fallback), which extractor() wraps so that every
-  // drive is read from its first moving step (parking_idle_start.hpp; unless options.read_whole_drives).
+  // drive is read from its first to its last moving step (parking_moving_part.hpp; unless options.read_whole_drives).
   // `extractor_notice` is passed through to extractor_notice().
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
              const ParkingKitOptions& options);

@@ -75,7 +75,7 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
                                 test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json rows = report_json_of(r.output).at("realistic_drivers");
-  ASSERT_EQ(rows.size(), 18u);  // 8 open loop, 7 following the path, 3 with a standing start
+  ASSERT_EQ(rows.size(), 19u);  // 8 open loop, 7 following the path, 4 standing still at the start or end
   // 15 Hz input without noise or delay changes nothing a skill model sees, beyond the gamepad's dead zone.
   EXPECT_GE(rows[0].at("agreement").get<double>(), 0.9) << rows[0];
   EXPECT_NE(rows[8].at("condition").get<std::string>().find("follows the path"), std::string::npos) << rows[8];

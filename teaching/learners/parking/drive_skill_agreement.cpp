@@ -80,9 +80,12 @@ std::vector<DriveCondition> standing_start_conditions() {
   waiting.start_wait_s = 1.0;
   RealisticDriverProfile following = waiting;
   following.follows_path = true;
+  RealisticDriverProfile both_ends = waiting;
+  both_ends.end_wait_s = 5.0;
   return {{"gamepad, no noise, delay 0.2 s, 15 Hz", delayed},
           {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first, 15 Hz", waiting},
-          {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first, 15 Hz, follows the path", following}};
+          {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first, 15 Hz, follows the path", following},
+          {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first and stands 5 s at the end, 15 Hz", both_ends}};
 }
 
 std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,

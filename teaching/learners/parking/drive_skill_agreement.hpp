@@ -45,9 +45,10 @@ std::vector<DriveCondition> standard_drive_conditions();
 // condition but the noiseless gamepad: the motion stays near the expert's, so the rows measure how the model
 // reads noisy, delayed and keyed input on the expert's motion rather than a drive that went elsewhere.
 std::vector<DriveCondition> path_following_conditions();
-// A standing start: the expert's drive a reaction delay late with no noise (the motion is the expert's, only
-// later), and noisy drivers who stand still for a second first, as a learner does after the countdown, open
-// loop and following the path. Kept apart from the lists above so that their rows keep their draws.
+// Standing still: the expert's drive a reaction delay late with no noise (the motion is the expert's, only
+// later); noisy drivers who stand still for a second first, as a learner does after the countdown, open loop and
+// following the path; and one who also stands five seconds at the end, as a learner who gave up on the spot does
+// until the time limit. Kept apart from the lists above so that their rows keep their draws.
 std::vector<DriveCondition> standing_start_conditions();
 
 struct AgreementRow {

@@ -32,6 +32,7 @@ std::vector<Json> planted_learner_trials(const ParkingKit& kit, const PlantedLea
   RealisticDriverProfile profile = sample_novice_profile(device, profile_rng);
   profile.deficit = deficit;
   profile.start_wait_s = run.start_wait_s;
+  profile.end_wait_s = run.end_wait_s;
   std::vector<Json> trials;
   for (std::size_t k = 0; k < pretest.size(); ++k) {
     const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;

@@ -45,12 +45,13 @@ struct LearnerOutcome {
 };
 
 // Who the learners of a run are: the pre-test they take (indices into the kit's pool), the seed S of their draws,
-// and how long each stands still before its first input (RealisticDriverProfile::start_wait_s; drawn from
-// nothing, so every other draw stays the same). The tables' learners start after their reaction delay only.
+// and how long each stands still before its first input and after its last (RealisticDriverProfile::start_wait_s,
+// end_wait_s; drawn from nothing, so every other draw stays the same). The tables' learners stand for neither.
 struct PlantedLearners {
   std::vector<int> pretest;
   std::uint64_t seed = 0;
   double start_wait_s = 0.0;
+  double end_wait_s = 0.0;
 };
 
 // Learner `learner`'s pre-test trials (documents), as the spec above drives them.

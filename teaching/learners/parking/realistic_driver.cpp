@@ -71,9 +71,9 @@ void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
   if (p.control_hz != parking::kControlHz && p.control_hz != parking::kSimulationHz)
     throw InputError("realistic driver", "control_hz must be 5 or 15, got " + std::to_string(p.control_hz));
   if (!(p.stick_noise >= 0.0) || !(p.reaction_delay_s >= 0.0) || !(p.noise_time_constant_s >= 0.0) ||
-      !(p.start_wait_s >= 0.0) ||
-      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s + p.start_wait_s))
-    throw InputError("realistic driver", "noise, time constant, delay and start wait must be finite and >= 0");
+      !(p.start_wait_s >= 0.0) || !(p.end_wait_s >= 0.0) ||
+      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s + p.start_wait_s + p.end_wait_s))
+    throw InputError("realistic driver", "noise, time constant, delay and waits must be finite and >= 0");
 }
 
 }  // namespace
@@ -140,6 +140,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
   const int delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));  // input samples
   const int wait = static_cast<int>(std::lround(p.start_wait_s * p.control_hz));
+  const int end_wait = static_cast<int>(std::lround(p.end_wait_s * p.control_hz));
   const int late = static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz));
   std::vector<bool> braking =
       p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
@@ -160,7 +161,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
       p.follows_path ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
   const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
   std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
-  for (int k = 0; k < expert_samples + delay + wait && !sim.done(); k += per_step) {
+  for (int k = 0; k < expert_samples + delay + wait + end_wait && !sim.done(); k += per_step) {
     double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
     VehicleState car = sim.vehicle();
     for (int s = 0; s < per_step; ++s) {
@@ -179,6 +180,9 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         }
         if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;
       }
+      // Past the expert's last input: brake within this sample, then stand (the stick at rest, noise and all).
+      if (end_wait > 0 && source >= expert_samples)
+        intent[0] = std::clamp(-speed / (parking::kMaxAcceleration / p.control_hz), -1.0, 1.0);
       ParkingAction u = through_device(p.device, intent, wander.next(rng));
       if (p.deficit == PlantedDeficit::WeakSteering) u[1] = std::clamp(u[1], -kWeakSteering, kWeakSteering);
       if (p.deficit == PlantedDeficit::NeverReversing && u[0] < 0.0) {

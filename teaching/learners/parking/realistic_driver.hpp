@@ -57,6 +57,9 @@ struct RealisticDriverProfile {
   // Open loop it only delays the drive further; a driver who follows the path still reacts after
   // reaction_delay_s to what it sees.
   double start_wait_s = 0.0;
+  // After the expert's last input: brake to a standstill and stand this long (>= 0), as a learner who has given up
+  // on the spot does until the trainer's time limit.
+  double end_wait_s = 0.0;
   PlantedDeficit deficit = PlantedDeficit::None;
   bool follows_path = false;  // closes the loop on the expert's path (path_follower.hpp); draws no numbers
 };

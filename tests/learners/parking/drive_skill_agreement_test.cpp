@@ -87,7 +87,8 @@ TEST(DriveSkillAgreement, StandingStartConditionsShiftByTheWaitAndTheDelay) {
   for (int i = 0; i < 8; ++i) drive.actions.push_back({0.8, -0.9});
   for (int i = 0; i < 8; ++i) drive.actions.push_back({-0.8, 0.9});
   const std::vector<DriveCondition> conditions = standing_start_conditions();
-  ASSERT_EQ(conditions.size(), 3u);
+  ASSERT_EQ(conditions.size(), 4u);
+  EXPECT_EQ(conditions[3].profile.end_wait_s, 5.0);
   EXPECT_EQ(conditions[0].profile.stick_noise, 0.0);
   EXPECT_EQ(conditions[1].profile.start_wait_s, 1.0);
   EXPECT_TRUE(conditions[2].profile.follows_path);

@@ -101,5 +101,22 @@ TEST(PlantedDeficitRecovery, NoiseOnlyLearnersWhoStandASecondFirstStayQuiet) {
   EXPECT_LE(whole_standing, shipped_standing - 3) << shipped_standing << " read from the first moving step";
 }
 
+// ... and one who gives up on the spot and stands until the time limit: weak steering is still found as often.
+TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoStandAtTheEndAreFoundAsOften) {
+  ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
+  auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
+  const ParkingKit whole(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, true});
+  const PlantedLearners on_time{setup().pretest, 14}, standing{setup().pretest, 14, 0.0, 5.0};
+  auto found = [&](const ParkingKit& kit, const PlantedLearners& run) {
+    int n = 0;
+    for (int i = 0; i < 20; ++i)
+      n += diagnose_planted_learner(kit, run, PlantedDeficit::WeakSteering, ExpertiseMode::Alg2, i).recovered;
+    return n;
+  };
+  const int shipped_on_time = found(*setup().kit, on_time), shipped_standing = found(*setup().kit, standing);
+  EXPECT_GE(shipped_standing, shipped_on_time - 1) << shipped_on_time << " on time";
+  EXPECT_LE(found(whole, standing), shipped_standing - 2) << shipped_standing << " read from first to last move";
+}
+
 }  // namespace
 }  // namespace sc

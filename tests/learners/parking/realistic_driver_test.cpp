@@ -110,6 +110,22 @@ TEST(RealisticDriver, AStartWaitStandsStillFirstThenDrivesTheSameMotion) {
   EXPECT_THROW(realistic_drive(e, p, a), InputError);
 }
 
+TEST(RealisticDriver, AnEndWaitBrakesToAStandstillAndStands) {
+  RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 15);
+  Rng a(1), b(1);
+  const ParkingTrial e = expert_drive();
+  const ParkingTrial plain = realistic_drive(e, p, a);
+  p.end_wait_s = 1.0;  // five more control steps
+  const ParkingTrial waited = realistic_drive(e, p, b);
+  ASSERT_EQ(waited.states.size(), plain.states.size() + 5);
+  for (std::size_t t = 0; t < plain.states.size(); ++t) EXPECT_EQ(waited.states[t], plain.states[t]) << t;
+  EXPECT_GT(std::abs(speed_of(plain.states.back())), 1.0);  // the expert's drive ends moving
+  for (std::size_t t = plain.states.size() + 1; t < waited.states.size(); ++t)
+    EXPECT_NEAR(speed_of(waited.states[t]), 0.0, 1e-9) << t;
+  p.end_wait_s = std::nan("");
+  EXPECT_THROW(realistic_drive(e, p, a), InputError);
+}
+
 TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
   const ParkingTrial e = expert_drive();
   RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 15);
