@@ -6,7 +6,8 @@
 // --noise-floor prints the learners' segment scores instead (the noise floor the noise-only learners give
 // quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
-// --start-wait S / --end-wait S make every learner stand still S seconds before / after driving;
+// --start-wait S / --end-wait S make every learner stand still S seconds before / after driving, --keeps-trying
+// makes it drive on until the time limit;
 // --read-whole-drives reads drives with that standing still (ParkingKitOptions::read_whole_drives).
 #include <CLI/CLI.hpp>
 
@@ -39,6 +40,7 @@ struct EvaluateDiagnosisArgs {
   std::optional<double> apply_noise_floor;
   double start_wait = 0.0;
   double end_wait = 0.0;
+  bool keeps_trying = false;
   bool read_whole_drives = false;
 };
 
@@ -99,11 +101,12 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const PlantedLearners run{select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
-                            args.seed, args.start_wait, args.end_wait};
+                            args.seed, args.start_wait, args.end_wait, args.keeps_trying};
   std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives",
               kit->extractor().name().c_str(), args.learners, args.seed, run.pretest.size());
   if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);
   if (args.end_wait > 0.0) std::printf(", standing %.1f s after driving", args.end_wait);
+  if (args.keeps_trying) std::printf(", driving on until the time limit");
   std::printf("%s\n", args.read_whole_drives ? ", drives read whole (standing still included)" : "");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
@@ -171,6 +174,9 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
                  "Every learner brakes to a standstill after its last input and stands this many seconds, as one who "
                  "has given up on the spot does until the trainer's time limit")
       ->check(CLI::Range(0.0, 20.0));
+  sub.add_flag("--keeps-trying", args->keeps_trying,
+               "Every learner drives on after the expert's plan, towards where the expert's drive ended, until the "
+               "trainer's time limit, as one who has not parked does (--end-wait comes first)");
   sub.add_flag("--read-whole-drives", args->read_whole_drives,
                "Research: read each drive whole, standing still at its ends included, as before 2026-12-05 "
                "(the kit reads from the first to the last moving step; docs/skills.md, \"A standing start\")");

@@ -19,10 +19,12 @@ int table_rows(const std::string& output) {
 
 TEST(EvaluateDiagnosisCommand, LearnersWhoStandStillReadWholeAreSaidSoAboveTheTable) {
   const auto r = run_skillcoach(
-      "evaluate-diagnosis --task parking --learners 2 --seed 14 --start-wait 1 --end-wait 5 --read-whole-drives");
+      "evaluate-diagnosis --task parking --learners 2 --seed 14 --start-wait 1 --end-wait 5 --keeps-trying "
+      "--read-whole-drives");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("each learner standing 1.0 s before driving"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("standing 5.0 s after driving"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("driving on until the time limit"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("drives read whole"), std::string::npos) << r.output;
   EXPECT_EQ(table_rows(r.output), 8 + 1) << r.output;  // the header, then 4 deficits x 2 modes
   const auto plain = run_skillcoach("evaluate-diagnosis --task parking --learners 2 --seed 14");

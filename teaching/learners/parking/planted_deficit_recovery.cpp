@@ -37,8 +37,10 @@ std::vector<Json> planted_learner_trials(const ParkingKit& kit, const PlantedLea
   for (std::size_t k = 0; k < pretest.size(); ++k) {
     const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;
     Rng drive_rng = learner_rng.fork(1 + k);
-    trials.push_back(
-        parking_trial_to_json(realistic_drive(parse_parking_trial(expert_doc, "expert pool"), profile, drive_rng)));
+    const ParkingTrial expert = parse_parking_trial(expert_doc, "expert pool");
+    if (run.keeps_trying)
+      profile.keeps_trying_until_s = kit.time_limit_seconds(static_cast<int>(expert.actions.size()));
+    trials.push_back(parking_trial_to_json(realistic_drive(expert, profile, drive_rng)));
   }
   return trials;
 }

@@ -52,6 +52,8 @@ struct PlantedLearners {
   std::uint64_t seed = 0;
   double start_wait_s = 0.0;
   double end_wait_s = 0.0;
+  // Each drives on after the expert's plan until the kit's time limit for the drive (keeps_trying_until_s).
+  bool keeps_trying = false;
 };
 
 // Learner `learner`'s pre-test trials (documents), as the spec above drives them.

@@ -71,8 +71,9 @@ void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
   if (p.control_hz != parking::kControlHz && p.control_hz != parking::kSimulationHz)
     throw InputError("realistic driver", "control_hz must be 5 or 15, got " + std::to_string(p.control_hz));
   if (!(p.stick_noise >= 0.0) || !(p.reaction_delay_s >= 0.0) || !(p.noise_time_constant_s >= 0.0) ||
-      !(p.start_wait_s >= 0.0) || !(p.end_wait_s >= 0.0) ||
-      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s + p.start_wait_s + p.end_wait_s))
+      !(p.start_wait_s >= 0.0) || !(p.end_wait_s >= 0.0) || !(p.keeps_trying_until_s >= 0.0) ||
+      !std::isfinite(p.stick_noise + p.reaction_delay_s + p.noise_time_constant_s + p.start_wait_s + p.end_wait_s +
+                     p.keeps_trying_until_s))
     throw InputError("realistic driver", "noise, time constant, delay and waits must be finite and >= 0");
 }
 
@@ -157,11 +158,14 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   wander.start(rng);
   int braking_run = 0;  // input samples since the current expert braking run began
   std::array<ParkingAction, parking::kSubstepsPerAction> sub{};
+  const bool keeps_trying = p.keeps_trying_until_s > 0.0 && end_wait == 0;
   const std::optional<PathFollower> follower =
-      p.follows_path ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
+      p.follows_path || keeps_trying ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
+  const int samples = std::max(expert_samples + delay + wait + end_wait,
+                               static_cast<int>(std::lround(p.keeps_trying_until_s * p.control_hz)));
   const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
   std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
-  for (int k = 0; k < expert_samples + delay + wait + end_wait && !sim.done(); k += per_step) {
+  for (int k = 0; k < samples && !sim.done(); k += per_step) {
     double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
     VehicleState car = sim.vehicle();
     for (int s = 0; s < per_step; ++s) {
@@ -172,7 +176,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         const std::size_t step = static_cast<std::size_t>(source / per_step);
         intent = clip_action(expert.actions[step]);
         braking_run = !braking.empty() && braking[step] ? braking_run + 1 : 0;
-        if (follower) {
+        if (p.follows_path) {
           // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
           const ParkingAction d = follower->correction(seen[static_cast<std::size_t>(source + wait)],
                                                        (source - delay) * substeps_per_sample);
@@ -180,7 +184,10 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
         }
         if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;
       }
-      // Past the expert's last input: brake within this sample, then stand (the stick at rest, noise and all).
+      // Past the expert's last input: on towards where the expert ended, as the driver saw the car a delay ago ...
+      if (keeps_trying && source >= expert_samples)
+        intent = follower->correction(seen[static_cast<std::size_t>(source + wait)], follower->substeps());
+      // ... or brake within this sample, then stand (the stick at rest, noise and all).
       if (end_wait > 0 && source >= expert_samples)
         intent[0] = std::clamp(-speed / (parking::kMaxAcceleration / p.control_hz), -1.0, 1.0);
       ParkingAction u = through_device(p.device, intent, wander.next(rng));

@@ -60,6 +60,10 @@ struct RealisticDriverProfile {
   // After the expert's last input: brake to a standstill and stand this long (>= 0), as a learner who has given up
   // on the spot does until the trainer's time limit.
   double end_wait_s = 0.0;
+  // After the expert's last input: drive on towards where the expert's drive ended (the path follower's greedy
+  // correction), until the trial has lasted this long (0: stop with the plan), as a learner who has not parked does
+  // until the trainer's time limit. end_wait_s, when set, comes first.
+  double keeps_trying_until_s = 0.0;
   PlantedDeficit deficit = PlantedDeficit::None;
   bool follows_path = false;  // closes the loop on the expert's path (path_follower.hpp); draws no numbers
 };

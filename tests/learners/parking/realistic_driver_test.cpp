@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "teaching/learners/parking/path_follower.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
@@ -124,6 +125,26 @@ TEST(RealisticDriver, AnEndWaitBrakesToAStandstillAndStands) {
     EXPECT_NEAR(speed_of(waited.states[t]), 0.0, 1e-9) << t;
   p.end_wait_s = std::nan("");
   EXPECT_THROW(realistic_drive(e, p, a), InputError);
+}
+
+TEST(RealisticDriver, OneWhoKeepsTryingDrivesOnTowardsTheExpertsEndUntilItsTime) {
+  RealisticDriverProfile p = clean(DriveDevice::Gamepad, 15);
+  Rng a(1), b(1);
+  const ParkingTrial e = expert_drive();
+  const ParkingTrial plain = realistic_drive(e, p, a);
+  p.keeps_trying_until_s = 8.0;  // 40 control steps, twice the plan's
+  const ParkingTrial trying = realistic_drive(e, p, b);
+  ASSERT_EQ(trying.states.size(), 41u);
+  for (std::size_t t = 0; t < plain.states.size(); ++t) EXPECT_EQ(trying.states[t], plain.states[t]) << t;
+  // The plan leaves the car rolling; left alone it would roll on for 4 s. Trying, the learner acts on every step
+  // and stays within a car length of where the expert's drive ended.
+  EXPECT_GT(std::abs(speed_of(plain.states.back())), 1.0);
+  for (std::size_t t = plain.actions.size(); t < trying.actions.size(); t += 3)
+    EXPECT_NE(trying.actions[t], (ParkingAction{0.0, 0.0})) << t;
+  const PathFollower follower(e);
+  const VehicleState end = follower.expert_state(follower.substeps());
+  const VehicleState last = vehicle_from_observation(trying.states.back());
+  EXPECT_LT(std::hypot(last.x - end.x, last.y - end.y), parking::kCarLength);
 }
 
 TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
