@@ -162,7 +162,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   const std::optional<PathFollower> follower =
       p.follows_path || keeps_trying ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
   const int samples = std::max(expert_samples + delay + wait + end_wait,
-                               static_cast<int>(std::lround(p.keeps_trying_until_s * p.control_hz)));
+                               keeps_trying ? static_cast<int>(std::lround(p.keeps_trying_until_s * p.control_hz)) : 0);
   const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
   std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
   for (int k = 0; k < samples && !sim.done(); k += per_step) {

@@ -145,6 +145,10 @@ TEST(RealisticDriver, OneWhoKeepsTryingDrivesOnTowardsTheExpertsEndUntilItsTime)
   const VehicleState end = follower.expert_state(follower.substeps());
   const VehicleState last = vehicle_from_observation(trying.states.back());
   EXPECT_LT(std::hypot(last.x - end.x, last.y - end.y), parking::kCarLength);
+  // Standing at the end comes first: one who gives up does not keep trying.
+  Rng c(1);
+  p.end_wait_s = 1.0;
+  EXPECT_EQ(realistic_drive(e, p, c).states.size(), plain.states.size() + 5);
 }
 
 TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
