@@ -34,6 +34,12 @@ RealisticDriverProfile clean(DriveDevice device, int hz) {
 
 double speed_of(const ParkingObservation& o) { return vehicle_from_observation(o).speed; }
 
+// The hand-made expert drive as `p` drives it, each time from the same seed: drives that differ only by the profile.
+ParkingTrial drive_as(const RealisticDriverProfile& p) {
+  Rng rng(1);
+  return realistic_drive(expert_drive(), p, rng);
+}
+
 TEST(RealisticDriver, SameSeedSameDriveOtherSeedAnotherDrive) {
   RealisticDriverProfile p;
   Rng a(7), b(7), c(8);
@@ -98,42 +104,36 @@ TEST(RealisticDriver, ReactionDelayShiftsTheExpertsActions) {
 TEST(RealisticDriver, AStartWaitStandsStillFirstThenDrivesTheSameMotion) {
   RealisticDriverProfile p = clean(DriveDevice::Gamepad, 15);
   p.reaction_delay_s = 0.2;
-  Rng a(1), b(1);
-  const ParkingTrial e = expert_drive();
-  const ParkingTrial late = realistic_drive(e, p, a);
+  const ParkingTrial late = drive_as(p);
   p.start_wait_s = 1.0;  // five more control steps
-  const ParkingTrial waited = realistic_drive(e, p, b);
+  const ParkingTrial waited = drive_as(p);
   ASSERT_EQ(waited.states.size(), late.states.size() + 5);
   for (std::size_t t = 0; t <= 5; ++t) EXPECT_EQ(waited.states[t], late.states[0]) << t;
   for (std::size_t t = 0; t < late.states.size(); ++t)
     for (std::size_t d = 0; d < 6; ++d) EXPECT_NEAR(waited.states[t + 5][d], late.states[t][d], 1e-12) << t;
   p.start_wait_s = -1.0;
-  EXPECT_THROW(realistic_drive(e, p, a), InputError);
+  EXPECT_THROW(drive_as(p), InputError);
 }
 
 TEST(RealisticDriver, AnEndWaitBrakesToAStandstillAndStands) {
   RealisticDriverProfile p = clean(DriveDevice::MouseJoystick, 15);
-  Rng a(1), b(1);
-  const ParkingTrial e = expert_drive();
-  const ParkingTrial plain = realistic_drive(e, p, a);
+  const ParkingTrial plain = drive_as(p);
   p.end_wait_s = 1.0;  // five more control steps
-  const ParkingTrial waited = realistic_drive(e, p, b);
+  const ParkingTrial waited = drive_as(p);
   ASSERT_EQ(waited.states.size(), plain.states.size() + 5);
   for (std::size_t t = 0; t < plain.states.size(); ++t) EXPECT_EQ(waited.states[t], plain.states[t]) << t;
   EXPECT_GT(std::abs(speed_of(plain.states.back())), 1.0);  // the expert's drive ends moving
   for (std::size_t t = plain.states.size() + 1; t < waited.states.size(); ++t)
     EXPECT_NEAR(speed_of(waited.states[t]), 0.0, 1e-9) << t;
   p.end_wait_s = std::nan("");
-  EXPECT_THROW(realistic_drive(e, p, a), InputError);
+  EXPECT_THROW(drive_as(p), InputError);
 }
 
 TEST(RealisticDriver, OneWhoKeepsTryingDrivesOnTowardsTheExpertsEndUntilItsTime) {
   RealisticDriverProfile p = clean(DriveDevice::Gamepad, 15);
-  Rng a(1), b(1);
-  const ParkingTrial e = expert_drive();
-  const ParkingTrial plain = realistic_drive(e, p, a);
+  const ParkingTrial plain = drive_as(p);
   p.keeps_trying_until_s = 8.0;  // 40 control steps, twice the plan's
-  const ParkingTrial trying = realistic_drive(e, p, b);
+  const ParkingTrial trying = drive_as(p);
   ASSERT_EQ(trying.states.size(), 41u);
   for (std::size_t t = 0; t < plain.states.size(); ++t) EXPECT_EQ(trying.states[t], plain.states[t]) << t;
   // The plan leaves the car rolling; left alone it would roll on for 4 s. Trying, the learner acts on every step
@@ -141,14 +141,13 @@ TEST(RealisticDriver, OneWhoKeepsTryingDrivesOnTowardsTheExpertsEndUntilItsTime)
   EXPECT_GT(std::abs(speed_of(plain.states.back())), 1.0);
   for (std::size_t t = plain.actions.size(); t < trying.actions.size(); t += 3)
     EXPECT_NE(trying.actions[t], (ParkingAction{0.0, 0.0})) << t;
-  const PathFollower follower(e);
+  const PathFollower follower(expert_drive());
   const VehicleState end = follower.expert_state(follower.substeps());
   const VehicleState last = vehicle_from_observation(trying.states.back());
   EXPECT_LT(std::hypot(last.x - end.x, last.y - end.y), parking::kCarLength);
   // Standing at the end comes first: one who gives up does not keep trying.
-  Rng c(1);
   p.end_wait_s = 1.0;
-  EXPECT_EQ(realistic_drive(e, p, c).states.size(), plain.states.size() + 5);
+  EXPECT_EQ(drive_as(p).states.size(), plain.states.size() + 5);
 }
 
 TEST(RealisticDriver, PlantedDeficitsShowInTheActions) {
