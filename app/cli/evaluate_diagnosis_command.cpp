@@ -8,7 +8,8 @@
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
 // --start-wait S / --end-wait S make every learner stand still S seconds before / after driving, --keeps-trying
 // makes it drive on until the time limit;
-// --read-whole-drives reads drives with that standing still (ParkingKitOptions::read_whole_drives).
+// --read-whole-drives and --read-in-one-piece read drives as the kit did before 2026-12-05 / 2026-12-06
+// (ParkingKitOptions::reading).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -41,7 +42,7 @@ struct EvaluateDiagnosisArgs {
   double start_wait = 0.0;
   double end_wait = 0.0;
   bool keeps_trying = false;
-  bool read_whole_drives = false;
+  ParkingDriveReading reading;
 };
 
 // Each deficit's learners' segment scores against the noise-only learners' floor.
@@ -96,7 +97,7 @@ std::string skill_list(const std::vector<int>& skills) {
 int run(const EvaluateDiagnosisArgs& args) {
   if (args.task != TaskKind::parking) throw InputError("evaluate-diagnosis", "only --task parking is measured here");
   const std::unique_ptr<TaskKit> base =
-      make_parking_kit(args.model, GoalRegion::WholeLot, args.apply_noise_floor, args.read_whole_drives);
+      make_parking_kit(args.model, GoalRegion::WholeLot, args.apply_noise_floor, args.reading);
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
@@ -107,7 +108,9 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);
   if (args.end_wait > 0.0) std::printf(", standing %.1f s after driving", args.end_wait);
   if (args.keeps_trying) std::printf(", driving on until the time limit");
-  std::printf("%s\n", args.read_whole_drives ? ", drives read whole (standing still included)" : "");
+  if (args.reading.whole_drive) std::printf(", drives read whole (standing still included)");
+  if (args.reading.one_piece) std::printf(", long drives read in one piece");
+  std::printf("\n");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
                 skill_list(deficit_skills(d, kit->skill_motions())).c_str());
@@ -177,9 +180,12 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   sub.add_flag("--keeps-trying", args->keeps_trying,
                "Every learner drives on after the expert's plan, towards where the expert's drive ended, until the "
                "trainer's time limit, as one who has not parked does (--end-wait comes first)");
-  sub.add_flag("--read-whole-drives", args->read_whole_drives,
+  sub.add_flag("--read-whole-drives", args->reading.whole_drive,
                "Research: read each drive whole, standing still at its ends included, as before 2026-12-05 "
                "(the kit reads from the first to the last moving step; docs/skills.md, \"A standing start\")");
+  sub.add_flag("--read-in-one-piece", args->reading.one_piece,
+               "Research: read a long drive in one piece, as before 2026-12-06 (the kit reads a drive much longer "
+               "than the pool's longest in pieces about that long; docs/skills.md, \"A learner who keeps driving\")");
   return [args] { return run(*args); };
 }
 

@@ -38,8 +38,9 @@
 #include "teaching/skills/compile_model.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/execution_noise_floor.hpp"
+#include "teaching/tasks/parking_drive_reading.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
-#include "teaching/tasks/parking_moving_part.hpp"
+#include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/skill_quality.hpp"
 #include "teaching/tasks/skill_training_data.hpp"
@@ -68,7 +69,7 @@ struct EvaluateArgs {
   int learners = 20;
   ExpertiseMode expertise = ExpertiseMode::Alg2;
   bool realistic_drivers = false;
-  bool read_whole_drives = false;
+  ParkingDriveReading reading;
   std::optional<int> readout_phases;  // instead of the model file's (CompileConfig::readout_phases)
 };
 
@@ -95,6 +96,7 @@ Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<Pa
   std::vector<DriveCondition> conditions = standard_drive_conditions();
   for (DriveCondition& c : path_following_conditions()) conditions.push_back(std::move(c));  // appended: same draws
   for (DriveCondition& c : standing_start_conditions()) conditions.push_back(std::move(c));
+  for (DriveCondition& c : keeps_trying_conditions()) conditions.push_back(std::move(c));
   Json rows = Json::array();
   for (const AgreementRow& r : measure_drive_agreement(extractor, drives, conditions, seed)) {
     rows.push_back({{"condition", r.condition},
@@ -270,9 +272,9 @@ int run(const EvaluateArgs& args) {
     if (args.task != TaskKind::parking) throw InputError("--realistic-drivers", "only for --task parking");
     std::fprintf(stderr, "evaluate-skills: skills of realistic drivers' copies vs the clean drives:\n");
     const std::vector<ParkingTrial> drives = held_out_drives(args.count, seed);
-    // Read as the parking kit reads a learner's drive: its moving part (parking_moving_part.hpp).
-    std::shared_ptr<const SkillExtractor> extractor = evaluation_extractor(args, model);
-    if (!args.read_whole_drives) extractor = std::make_shared<ParkingMovingPartExtractor>(std::move(extractor));
+    // Read as the parking kit reads a learner's drive (parking_drive_reading.hpp).
+    const std::shared_ptr<const SkillExtractor> extractor =
+        parking_drive_reader(evaluation_extractor(args, model), shipped_pool_piece_length(), args.reading);
     report["realistic_drivers"] = realistic_driver_rows(*extractor, drives, seed);
     report["keyed_actions_on_clean_motion"] = keyed_action_row(*extractor, drives);
     report["expert_actions_at_limits"] = limits_row(drives);
@@ -299,9 +301,13 @@ CommandRunner setup_evaluate_skills(CLI::App& sub) {
       sub.add_flag("--realistic-drivers", args->realistic_drivers,
                    "Parking: also drive each demonstration as novices on a gamepad, mouse joystick or keyboard would "
                    "(noise, delay, 15 Hz input) and report how often their skills agree with the clean drive's");
-  sub.add_flag("--read-whole-drives", args->read_whole_drives,
+  sub.add_flag("--read-whole-drives", args->reading.whole_drive,
                "Research, with --realistic-drivers: read each copy whole, standing still at its ends included, as "
                "before 2026-12-05 (docs/skills.md, \"A standing start\")")
+      ->needs(realistic);
+  sub.add_flag("--read-in-one-piece", args->reading.one_piece,
+               "Research, with --realistic-drivers: read a long copy in one piece, as before 2026-12-06 "
+               "(docs/skills.md, \"A learner who keeps driving\")")
       ->needs(realistic);
   sub.add_flag("--details", args->details,
                "Also list every demonstration: its true boundaries and the predicted [skill, start, end] segments");

@@ -23,8 +23,8 @@
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/segmentation_metrics.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
+#include "teaching/tasks/parking_drive_reading.hpp"
 #include "teaching/tasks/parking_kit.hpp"
-#include "teaching/tasks/parking_moving_part.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_steps.hpp"
@@ -80,9 +80,10 @@ int run(const SegmentArgs& args) {
   if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
     throw InputError(args.trial, "not a " + task + " trial ($.task is not \"" + task + "\")");
   Chosen chosen = choose_extractor(args.task, args.model);
-  // A parking trial is read as the kit reads a learner's drive: its moving part (parking_moving_part.hpp).
+  // A parking trial is read as the kit reads a learner's drive (parking_drive_reading.hpp).
   std::shared_ptr<const SkillExtractor> extractor = std::move(chosen.extractor);
-  if (args.task == TaskKind::parking) extractor = std::make_shared<ParkingMovingPartExtractor>(std::move(extractor));
+  if (args.task == TaskKind::parking)
+    extractor = parking_drive_reader(std::move(extractor), shipped_pool_piece_length());
 
   StepSequence steps;
   std::optional<ParkingTrial> parking;

@@ -52,6 +52,9 @@ class SkillExtractor {
   }
   virtual int num_skills() const = 0;    // skill ids are in [0, num_skills())
   virtual std::string name() const = 0;  // "compile" or "time-heuristic"
+  // True when the extractor cuts whatever it is given into fixed slices of time (the paper's time heuristic):
+  // it is given whole trajectories, since reading one in pieces would change what the baseline is.
+  virtual bool slices_by_time() const { return false; }
 };
 
 }  // namespace sc

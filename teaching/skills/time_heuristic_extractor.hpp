@@ -12,6 +12,7 @@ class TimeHeuristicExtractor final : public SkillExtractor {
   Segmentation extract(const StepSequence& trajectory) const override;
   int num_skills() const override { return k_; }
   std::string name() const override { return "time-heuristic"; }
+  bool slices_by_time() const override { return true; }
 
  private:
   int k_;

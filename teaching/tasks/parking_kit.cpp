@@ -7,7 +7,6 @@
 #include "engine/parking/parking_expert.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/parking_execution.hpp"
-#include "teaching/tasks/parking_moving_part.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -28,13 +27,20 @@ std::filesystem::path default_parking_pool_file(GoalRegion region) {
          (region == GoalRegion::StudyCorner ? "parking_pool_study_corner.json" : "parking_pool.json");
 }
 
+int shipped_pool_piece_length() {
+  std::vector<StepSequence> drives;
+  for (const ParkingTrial& t : load_or_generate_parking_pool(default_parking_pool_file(), {}).trials)
+    drives.push_back(parking_step_sequence(t));
+  return longest_moving_drive(drives);
+}
+
 ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
                        const ParkingKitOptions& options)
     : extractor_(std::move(extractor)),
       extractor_notice_(std::move(extractor_notice)),
       region_(options.pool.region),
       noise_floor_(options.execution_noise_floor),
-      read_whole_drives_(options.read_whole_drives) {
+      reading_(options.reading) {
   if (options.pool_file.empty()) {
     build(generate_parking_pool(options.pool));
     return;
@@ -52,7 +58,6 @@ ParkingKit::ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::str
 
 void ParkingKit::build(std::vector<ParkingTrial> pool) {
   if (!extractor_) throw InputError("parking kit", "no skill extractor");
-  if (!read_whole_drives_) extractor_ = std::make_shared<ParkingMovingPartExtractor>(std::move(extractor_));
   if (pool.empty()) throw InputError("parking kit", "empty expert pool");
   demos_.reserve(pool.size());
   for (const ParkingTrial& t : pool) {
@@ -63,6 +68,7 @@ void ParkingKit::build(std::vector<ParkingTrial> pool) {
     d.reward = t.rewards.empty() ? 0.0 : t.rewards.back();
     demos_.push_back(std::move(d));
   }
+  extractor_ = parking_drive_reader(std::move(extractor_), longest_moving_drive(demo_steps(demos_)), reading_);
   segment_expert_demos(demos_, *extractor_, kParkingTimeSlices);
   motions_ = parking_skill_motions(demo_steps(demos_), demo_skills(demos_), extractor_->num_skills());
   descriptions_ = describe_parking_motions(motions_);

@@ -10,6 +10,7 @@
 
 #include "teaching/sessions/task_kit.hpp"
 #include "teaching/tasks/parking_drill_projector.hpp"
+#include "teaching/tasks/parking_drive_reading.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_skill_motion.hpp"
 
@@ -26,19 +27,22 @@ struct ParkingKitOptions {
   // within what noise does (docs/skills.md, "Quality-aware expertise"); `evaluate-diagnosis
   // --apply-noise-floor` measures it.
   std::optional<NoiseFloor> execution_noise_floor;
-  // Research: read every drive whole, standing still at its ends included, as before 2026-12-05
-  // (parking_moving_part.hpp says why the kit does not); `--read-whole-drives` of the evaluate commands.
-  bool read_whole_drives = false;
+  // Research: read drives as before 2026-12-05 or 2026-12-06 (parking_drive_reading.hpp says how the kit reads
+  // them, and why); `--read-whole-drives` and `--read-in-one-piece` of the evaluate commands.
+  ParkingDriveReading reading = {};
 };
 
 // asset_dir()/experts/parking_pool.json, or parking_pool_study_corner.json for the study corner.
 std::filesystem::path default_parking_pool_file(GoalRegion region = GoalRegion::WholeLot);
+// longest_moving_drive of the shipped pool (generated when its file is missing, as the kit does): the piece length
+// the kit reads drives with, for tools that read drives without a kit (`segment`, `evaluate-skills`).
+int shipped_pool_piece_length();
 
 class ParkingKit final : public TaskKit {
  public:
   // Loads (or generates, see load_or_generate_parking_pool) the pool and segments it with `extractor`
   // (any SkillExtractor: CompILE, or the time heuristic as a fallback), which extractor() wraps so that every
-  // drive is read from its first to its last moving step (parking_moving_part.hpp; unless options.read_whole_drives).
+  // drive is read as parking_drive_reading.hpp says (options.reading), pieces as long as the pool's longest drive.
   // `extractor_notice` is passed through to extractor_notice().
   ParkingKit(std::shared_ptr<const SkillExtractor> extractor, std::string extractor_notice,
              const ParkingKitOptions& options);
@@ -96,7 +100,7 @@ class ParkingKit final : public TaskKit {
   std::string pool_notice_;
   GoalRegion region_ = GoalRegion::WholeLot;
   std::optional<NoiseFloor> noise_floor_;
-  bool read_whole_drives_ = false;
+  ParkingDriveReading reading_;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

@@ -37,12 +37,12 @@ ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::pat
 }  // namespace
 
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
-                                          std::optional<NoiseFloor> execution_noise_floor, bool read_whole_drives) {
+                                          std::optional<NoiseFloor> execution_noise_floor, ParkingDriveReading reading) {
   ChosenExtractor chosen = choose_skill_extractor(TaskKind::parking, model);
   return std::make_unique<ParkingKit>(
       chosen.extractor, chosen.notice,
       ParkingKitOptions{default_parking_pool_file(region), ParkingPoolOptions{100, 0, region}, execution_noise_floor,
-                        read_whole_drives});
+                        reading});
 }
 
 std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::path& model, GoalRegion region) {

@@ -10,6 +10,7 @@
 #include "engine/core/task_kind.hpp"
 #include "engine/parking/parking_scenario.hpp"
 #include "teaching/sessions/task_kit.hpp"
+#include "teaching/tasks/parking_drive_reading.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 
 namespace sc {
@@ -24,7 +25,7 @@ std::unique_ptr<TaskKit> make_task_kit(TaskKind task, const std::filesystem::pat
 // `evaluate-diagnosis --apply-noise-floor`; the shipped kit uses none, ParkingKitOptions).
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
                                           std::optional<NoiseFloor> execution_noise_floor,
-                                          bool read_whole_drives = false);
+                                          ParkingDriveReading reading = {});
 // A writing kit (default options) for `extractor`, with the noise floor recorded with `model`
 // (writing_noise_floor.hpp; none when `model` is empty or records none): what make_task_kit builds for writing,
 // for callers that choose the extractor themselves (evaluate-skills, tests).

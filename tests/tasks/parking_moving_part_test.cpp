@@ -5,29 +5,15 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
-#include "engine/parking/parking_sim.hpp"
-#include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 #include "tests/support/action_sign_extractor.hpp"
+#include "tests/support/parking_test_drive.hpp"
 
 namespace sc {
 namespace {
 
-// `standing` control steps with the pedal at `idle_pedal`, then forward with a left turn and back on the pedal to a
-// stop, then `standing_after` steps of standing still.
 StepSequence drive(int standing, double idle_pedal = 0.0, int standing_after = 0) {
-  ParkingSim sim(parking_pool_scenario(0, 0));
-  std::vector<ParkingObservation> states{sim.observation()};
-  std::vector<ParkingAction> actions;
-  for (int i = 0; i < standing; ++i) actions.push_back({idle_pedal, 0.0});
-  for (int i = 0; i < 6; ++i) actions.push_back({0.9, 0.4});
-  for (int i = 0; i < 6; ++i) actions.push_back({-0.9, -0.4});
-  for (int i = 0; i < standing_after; ++i) actions.push_back({0.0, 0.0});
-  for (const ParkingAction& u : actions) {
-    sim.step(u);
-    states.push_back(sim.observation());
-  }
-  return parking_step_sequence(states, actions);
+  return test::parking_test_drive(standing, idle_pedal, standing_after);
 }
 
 TEST(ParkingMovingPart, CountsTheStepsBeforeTheCarMoves) {

@@ -88,6 +88,14 @@ std::vector<DriveCondition> standing_start_conditions() {
           {"gamepad, noise 0.1, delay 0.2 s, waits 1 s first and stands 5 s at the end, 15 Hz", both_ends}};
 }
 
+std::vector<DriveCondition> keeps_trying_conditions() {
+  RealisticDriverProfile trying;
+  trying.stick_noise = 0.1;
+  trying.reaction_delay_s = 0.2;
+  trying.keeps_trying_until_s = 15.0;
+  return {{"gamepad, noise 0.1, delay 0.2 s, keeps trying until 15 s, 15 Hz", trying}};
+}
+
 std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
                                                   const std::vector<ParkingTrial>& expert_drives,
                                                   const std::vector<DriveCondition>& conditions, std::uint64_t seed) {

@@ -50,6 +50,10 @@ std::vector<DriveCondition> path_following_conditions();
 // following the path; and one who also stands five seconds at the end, as a learner who gave up on the spot does
 // until the time limit. Kept apart from the lists above so that their rows keep their draws.
 std::vector<DriveCondition> standing_start_conditions();
+// A noisy driver who has not parked when the expert's plan ends and keeps driving towards the expert's end until
+// 15 s (the trainer's time limit of a 25-step drive): the drive runs three to four times as long as the expert's.
+// Its agreement counts the expert's steps only; its skill presence is what Alg. 2 asks of the whole drive.
+std::vector<DriveCondition> keeps_trying_conditions();
 
 struct AgreementRow {
   std::string condition;

@@ -86,7 +86,8 @@ TEST(PlantedDeficitRecovery, NeverReversingNoisyLearnersAreFirstDrilledOnReversi
 TEST(PlantedDeficitRecovery, NoiseOnlyLearnersWhoStandASecondFirstStayQuiet) {
   ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
   auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
-  const ParkingKit whole(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, true});
+  const ParkingKit whole(extractor, "",
+                         ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, {.whole_drive = true}});
   constexpr int kQuietLearners = 20;
   const PlantedLearners on_time{setup().pretest, 14}, standing{setup().pretest, 14, 1.0};
   auto quiet = [&](const ParkingKit& kit, const PlantedLearners& run) {
@@ -105,7 +106,8 @@ TEST(PlantedDeficitRecovery, NoiseOnlyLearnersWhoStandASecondFirstStayQuiet) {
 TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoStandAtTheEndAreFoundAsOften) {
   ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
   auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
-  const ParkingKit whole(extractor, "", ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, true});
+  const ParkingKit whole(extractor, "",
+                         ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, {.whole_drive = true}});
   const PlantedLearners on_time{setup().pretest, 14}, standing{setup().pretest, 14, 0.0, 5.0};
   auto found = [&](const ParkingKit& kit, const PlantedLearners& run) {
     int n = 0;
@@ -116,6 +118,31 @@ TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoStandAtTheEndAreFoundAsOften
   const int shipped_on_time = found(*setup().kit, on_time), shipped_standing = found(*setup().kit, standing);
   EXPECT_GE(shipped_standing, shipped_on_time - 1) << shipped_on_time << " on time";
   EXPECT_LE(found(whole, standing), shipped_standing - 2) << shipped_standing << " read from first to last move";
+}
+
+// A learner who has not parked keeps driving until the time limit, three to four times as long as the expert. Read
+// in pieces about as long as the pool's drives (the kit), weak steering is found more often than read in one piece,
+// and noise-only learners stay as quiet (docs/skills.md, "A learner who keeps driving"). Seeds 14 and 16: no table's.
+TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoKeepTryingAreFoundMoreOftenReadInPieces) {
+  ASSERT_TRUE(std::filesystem::exists(kShipped)) << kShipped.string();
+  auto extractor = std::make_shared<CompileExtractor>(CompileExtractor::load(kShipped, "parking"));
+  const ParkingKit one_piece(extractor, "",
+                             ParkingKitOptions{default_parking_pool_file(), {}, std::nullopt, {.one_piece = true}});
+  auto count = [&](const ParkingKit& kit, PlantedDeficit deficit) {
+    int n = 0;
+    for (std::uint64_t seed : {14, 16}) {
+      const PlantedLearners trying{setup().pretest, seed, 0.0, 0.0, true};
+      for (int i = 0; i < 20; ++i) {
+        const LearnerOutcome o = diagnose_planted_learner(kit, trying, deficit, ExpertiseMode::Alg2, i);
+        n += deficit == PlantedDeficit::None ? o.quiet : o.recovered;
+      }
+    }
+    return n;
+  };
+  const int pieces_found = count(*setup().kit, PlantedDeficit::WeakSteering);
+  EXPECT_GE(pieces_found, count(one_piece, PlantedDeficit::WeakSteering) + 3) << pieces_found << " in pieces";
+  const int pieces_quiet = count(*setup().kit, PlantedDeficit::None);
+  EXPECT_GE(pieces_quiet, count(one_piece, PlantedDeficit::None) - 1) << pieces_quiet << " in pieces";
 }
 
 }  // namespace
