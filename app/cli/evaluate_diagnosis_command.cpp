@@ -23,6 +23,7 @@
 #include "engine/core/error.hpp"
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 #include "teaching/scenarios/diverse_scenario_selection.hpp"
+#include "teaching/skills/piecewise_extractor.hpp"
 #include "teaching/tasks/execution_noise_floor.hpp"
 #include "teaching/tasks/expert_demos.hpp"
 #include "teaching/tasks/task_kit_factory.hpp"
@@ -110,6 +111,9 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (args.keeps_trying) std::printf(", driving on until the time limit");
   if (args.reading.whole_drive) std::printf(", drives read whole (standing still included)");
   if (args.reading.one_piece) std::printf(", long drives read in one piece");
+  if (!args.reading.whole_drive && !args.reading.one_piece)
+    std::printf(", drives of %d steps or more read in pieces of about %d",
+                shortest_split_length(kit->piece_length()), kit->piece_length());
   std::printf("\n");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),

@@ -41,6 +41,8 @@ int piece_count(int length, int piece_length) {
   return std::max(1, static_cast<int>((2LL * length + piece_length) / (2LL * piece_length)));
 }
 
+int shortest_split_length(int piece_length) { return (3 * std::max(1, piece_length) + 1) / 2; }
+
 PiecewiseExtractor::PiecewiseExtractor(std::shared_ptr<const SkillExtractor> inner, int piece_length)
     : inner_(std::move(inner)), piece_length_(piece_length) {
   if (!inner_) throw InputError("piecewise skill extractor", "no extractor to wrap");

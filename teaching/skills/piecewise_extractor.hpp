@@ -25,6 +25,8 @@
 namespace sc {
 
 int piece_count(int length, int piece_length);
+// The shortest trajectory read in more than one piece: ceil(1.5 L).
+int shortest_split_length(int piece_length);
 
 class PiecewiseExtractor final : public SkillExtractor {
  public:

@@ -90,6 +90,9 @@ class ParkingKit final : public TaskKit {
   GoalRegion goal_region() const { return region_; }
   // Why the pool was regenerated ("" when it was read from the file or given).
   const std::string& pool_notice() const { return pool_notice_; }
+  // The pool's longest moving drive, in control steps: drives much longer are read in pieces about this long
+  // (parking_drive_reading.hpp; also when options.reading reads them in one piece, which does not use it).
+  int piece_length() const { return piece_length_; }
   const ParkingDrillProjector& parking_projector() const { return *projector_; }
 
  private:
@@ -101,6 +104,7 @@ class ParkingKit final : public TaskKit {
   GoalRegion region_ = GoalRegion::WholeLot;
   std::optional<NoiseFloor> noise_floor_;
   ParkingDriveReading reading_;
+  int piece_length_ = 1;
   std::vector<ExpertDemo> demos_;
   std::vector<ParkingSkillMotion> motions_;
   std::vector<std::string> descriptions_;  // describe_skill's words, distinct among used skills

@@ -32,6 +32,9 @@ TEST(EvaluateDiagnosisCommand, LearnersWhoStandStillReadWholeAreSaidSoAboveTheTa
   EXPECT_EQ(plain.output.find("standing"), std::string::npos) << plain.output;
   EXPECT_EQ(plain.output.find("read whole"), std::string::npos) << plain.output;
   EXPECT_EQ(plain.output.find("one piece"), std::string::npos) << plain.output;
+  // The shipped pool's longest drive moves for 26 control steps.
+  EXPECT_NE(plain.output.find("drives of 39 steps or more read in pieces of about 26"), std::string::npos)
+      << plain.output;
   const auto one_piece = run_skillcoach("evaluate-diagnosis --task parking --learners 2 --seed 14 --read-in-one-piece");
   ASSERT_EQ(one_piece.exit_code, 0) << one_piece.output;
   EXPECT_NE(one_piece.output.find("long drives read in one piece"), std::string::npos) << one_piece.output;

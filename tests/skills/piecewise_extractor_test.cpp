@@ -41,6 +41,10 @@ TEST(PiecewiseExtractor, CountsPiecesAsTheRoundedRatioOfLengths) {
   EXPECT_EQ(piece_count(65, 26), 3);  // 2.5
   EXPECT_EQ(piece_count(0, 26), 1);
   EXPECT_EQ(piece_count(1, 26), 1);
+  for (int piece : {1, 2, 25, 26}) {
+    EXPECT_EQ(piece_count(shortest_split_length(piece), piece), 2) << piece;
+    EXPECT_EQ(piece_count(shortest_split_length(piece) - 1, piece), 1) << piece;
+  }
 }
 
 TEST(PiecewiseExtractor, ReadsATrajectoryAboutAsLongAsAPieceExactlyAsTheWrappedExtractor) {
