@@ -136,17 +136,102 @@ StepSequence with_keyboard_keys(StepSequence steps) {
   return steps;
 }
 
+namespace {
+
+// The drive's clock, in input samples.
+struct DriveTiming {
+  int per_step = 1;             // input samples per control step
+  int delay = 0, wait = 0;      // reaction delay and standing start
+  int end_wait = 0;             // standing at the end
+  int expert_samples = 0;       // the expert's inputs
+  int samples = 0;              // the whole drive
+  int substeps_per_sample = 0;  // simulation substeps per input sample
+  bool keeps_trying = false;    // on after the plan (an end wait comes first)
+};
+
+DriveTiming drive_timing(const ParkingTrial& expert, const RealisticDriverProfile& p) {
+  DriveTiming t;
+  t.per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
+  t.delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));
+  t.wait = static_cast<int>(std::lround(p.start_wait_s * p.control_hz));
+  t.end_wait = static_cast<int>(std::lround(p.end_wait_s * p.control_hz));
+  t.expert_samples = static_cast<int>(expert.actions.size()) * t.per_step;
+  t.keeps_trying = p.keeps_trying_until_s > 0.0 && t.end_wait == 0;
+  t.samples = std::max(t.expert_samples + t.delay + t.wait + t.end_wait,
+                       t.keeps_trying ? static_cast<int>(std::lround(p.keeps_trying_until_s * p.control_hz)) : 0);
+  t.substeps_per_sample = parking::kSubstepsPerAction / t.per_step;
+  return t;
+}
+
+// What the driver means to do at each input sample, before the device and its deficit: the expert's input it is
+// reproducing (late braking held off, corrected towards the path when it follows it), then on towards the expert's
+// end or braking to a stand.
+class DriverIntent {
+ public:
+  DriverIntent(const ParkingTrial& expert, const RealisticDriverProfile& p, const DriveTiming& t)
+      : expert_(expert),
+        p_(p),
+        t_(t),
+        late_(static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz))),
+        braking_(p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{}),
+        follower_(p.follows_path || t.keeps_trying ? std::optional<PathFollower>(std::in_place, expert)
+                                                   : std::nullopt) {}
+
+  bool follows() const { return follower_.has_value(); }
+
+  // Sample `source` of the expert's inputs (it may lie before or past them); `seen`: the car at the start of each
+  // input sample so far; `speed`: the car's speed now.
+  ParkingAction at(int source, const std::vector<VehicleState>& seen, double speed) {
+    ParkingAction intent{0.0, 0.0};
+    if (source >= 0 && source < t_.expert_samples) intent = reproduced(source, seen);
+    // Past the expert's last input: on towards where the expert ended, as the driver saw the car a delay ago ...
+    if (t_.keeps_trying && source >= t_.expert_samples)
+      intent = follower_->correction(seen[static_cast<std::size_t>(source + t_.wait)], follower_->substeps());
+    // ... or brake within this sample, then stand (the stick at rest, noise and all).
+    if (t_.end_wait > 0 && source >= t_.expert_samples)
+      intent[0] = std::clamp(-speed / (parking::kMaxAcceleration / p_.control_hz), -1.0, 1.0);
+    return intent;
+  }
+
+ private:
+  ParkingAction reproduced(int source, const std::vector<VehicleState>& seen) {
+    const std::size_t step = static_cast<std::size_t>(source / t_.per_step);
+    ParkingAction intent = clip_action(expert_.actions[step]);
+    braking_run_ = !braking_.empty() && braking_[step] ? braking_run_ + 1 : 0;
+    if (p_.follows_path) {
+      // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
+      const ParkingAction d = follower_->correction(seen[static_cast<std::size_t>(source + t_.wait)],
+                                                    (source - t_.delay) * t_.substeps_per_sample);
+      intent = clip_action({intent[0] + d[0], intent[1] + d[1]});
+    }
+    if (braking_run_ > 0 && braking_run_ <= late_) intent[0] = 0.0;
+    return intent;
+  }
+
+  const ParkingTrial& expert_;
+  const RealisticDriverProfile& p_;
+  const DriveTiming& t_;
+  int late_;
+  std::vector<bool> braking_;
+  int braking_run_ = 0;  // input samples since the current expert braking run began
+  std::optional<PathFollower> follower_;
+};
+
+// The device's output with the planted deficit: weak steering clamps the wheel; a driver who never reverses brakes at
+// most hard enough to stop within this input sample, never below zero speed.
+ParkingAction with_deficit(ParkingAction u, PlantedDeficit deficit, double speed, int control_hz) {
+  if (deficit == PlantedDeficit::WeakSteering) u[1] = std::clamp(u[1], -kWeakSteering, kWeakSteering);
+  if (deficit == PlantedDeficit::NeverReversing && u[0] < 0.0)
+    u[0] = std::max(u[0], -std::max(speed, 0.0) / (parking::kMaxAcceleration / control_hz));
+  return u;
+}
+
+}  // namespace
+
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& p, Rng& rng) {
   check(expert, p);
-  const int per_step = p.control_hz == parking::kControlHz ? 1 : parking::kSubstepsPerAction;
-  const int delay = static_cast<int>(std::lround(p.reaction_delay_s * p.control_hz));  // input samples
-  const int wait = static_cast<int>(std::lround(p.start_wait_s * p.control_hz));
-  const int end_wait = static_cast<int>(std::lround(p.end_wait_s * p.control_hz));
-  const int late = static_cast<int>(std::lround(kLateBrakingSeconds * p.control_hz));
-  std::vector<bool> braking =
-      p.deficit == PlantedDeficit::LateBraking ? expert_braking_steps(expert) : std::vector<bool>{};
-  const int expert_samples = static_cast<int>(expert.actions.size()) * per_step;
-
+  const DriveTiming t = drive_timing(expert, p);
+  DriverIntent intent(expert, p, t);
   ParkingTrial out;
   out.scenario = expert.scenario;
   out.control_hz = p.control_hz;
@@ -156,53 +241,23 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
   out.states.push_back(sim.observation());
   Wander wander(p.stick_noise, p.noise_time_constant_s, p.control_hz);
   wander.start(rng);
-  int braking_run = 0;  // input samples since the current expert braking run began
   std::array<ParkingAction, parking::kSubstepsPerAction> sub{};
-  const bool keeps_trying = p.keeps_trying_until_s > 0.0 && end_wait == 0;
-  const std::optional<PathFollower> follower =
-      p.follows_path || keeps_trying ? std::optional<PathFollower>(std::in_place, expert) : std::nullopt;
-  const int samples = std::max(expert_samples + delay + wait + end_wait,
-                               keeps_trying ? static_cast<int>(std::lround(p.keeps_trying_until_s * p.control_hz)) : 0);
-  const int substeps_per_sample = parking::kSubstepsPerAction / per_step;
   std::vector<VehicleState> seen;  // the car at the start of each input sample (for the follower)
-  for (int k = 0; k < samples && !sim.done(); k += per_step) {
+  for (int k = 0; k < t.samples && !sim.done(); k += t.per_step) {
     double speed = sim.vehicle().speed;  // within the control step: v += 5 u0 / input rate (exact, no drag)
     VehicleState car = sim.vehicle();
-    for (int s = 0; s < per_step; ++s) {
-      const int source = k + s - delay - wait;  // the expert's input sample the driver is reproducing
-      if (follower) seen.push_back(car);
-      ParkingAction intent{0.0, 0.0};
-      if (source >= 0 && source < expert_samples) {
-        const std::size_t step = static_cast<std::size_t>(source / per_step);
-        intent = clip_action(expert.actions[step]);
-        braking_run = !braking.empty() && braking[step] ? braking_run + 1 : 0;
-        if (p.follows_path) {
-          // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
-          const ParkingAction d = follower->correction(seen[static_cast<std::size_t>(source + wait)],
-                                                       (source - delay) * substeps_per_sample);
-          intent = clip_action({intent[0] + d[0], intent[1] + d[1]});
-        }
-        if (braking_run > 0 && braking_run <= late) intent[0] = 0.0;
-      }
-      // Past the expert's last input: on towards where the expert ended, as the driver saw the car a delay ago ...
-      if (keeps_trying && source >= expert_samples)
-        intent = follower->correction(seen[static_cast<std::size_t>(source + wait)], follower->substeps());
-      // ... or brake within this sample, then stand (the stick at rest, noise and all).
-      if (end_wait > 0 && source >= expert_samples)
-        intent[0] = std::clamp(-speed / (parking::kMaxAcceleration / p.control_hz), -1.0, 1.0);
-      ParkingAction u = through_device(p.device, intent, wander.next(rng));
-      if (p.deficit == PlantedDeficit::WeakSteering) u[1] = std::clamp(u[1], -kWeakSteering, kWeakSteering);
-      if (p.deficit == PlantedDeficit::NeverReversing && u[0] < 0.0) {
-        // Brake at most hard enough to stop within this input sample, never below zero speed.
-        u[0] = std::max(u[0], -std::max(speed, 0.0) / (parking::kMaxAcceleration / p.control_hz));
-      }
+    for (int s = 0; s < t.per_step; ++s) {
+      if (intent.follows()) seen.push_back(car);
+      const ParkingAction wanted = intent.at(k + s - t.delay - t.wait, seen, speed);
+      const ParkingAction u =
+          with_deficit(through_device(p.device, wanted, wander.next(rng)), p.deficit, speed, p.control_hz);
       speed += clip_action(u)[0] * parking::kMaxAcceleration / p.control_hz;
-      for (int h = 0; follower && h < substeps_per_sample; ++h)  // where the driver will see the car next
+      for (int h = 0; intent.follows() && h < t.substeps_per_sample; ++h)  // where the driver will see the car next
         car = bicycle_substep(car, acceleration_of(clip_action(u)), steering_of(clip_action(u)));
       sub[static_cast<std::size_t>(s)] = u;
       out.actions.push_back(u);
     }
-    const ParkingStepResult r = per_step == 1 ? sim.step(sub[0]) : sim.step_substeps(sub);
+    const ParkingStepResult r = t.per_step == 1 ? sim.step(sub[0]) : sim.step_substeps(sub);
     out.states.push_back(sim.observation());
     out.rewards.push_back(r.reward);
   }
