@@ -15,17 +15,15 @@
 #include "app/cli/segment_image.hpp"
 #include "app/cli/task_option.hpp"
 #include "app/gui/offscreen_screenshot.hpp"
-#include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
 #include "engine/core/json_file.hpp"
 #include "engine/writing/infill.hpp"
 #include "engine/writing/step_data.hpp"
-#include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/segmentation_metrics.hpp"
-#include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_drive_reading.hpp"
 #include "teaching/tasks/parking_kit.hpp"
 #include "teaching/tasks/parking_steps.hpp"
+#include "teaching/tasks/task_kit_factory.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_steps.hpp"
 
@@ -40,33 +38,6 @@ struct SegmentArgs {
   std::string trial;
 };
 
-struct Chosen {
-  std::unique_ptr<SkillExtractor> extractor;
-  std::string model;  // the file used, empty for the time heuristic
-};
-
-Chosen choose_extractor(TaskKind kind, const std::string& model) {
-  const bool parking = kind == TaskKind::parking;
-  const std::string task(to_string(kind));
-  const int state_dim = parking ? kParkingStateDim : writing::kWritingStateDim;
-  const int action_dim = parking ? kParkingActionDim : 2;
-  if (!model.empty())
-    return {std::make_unique<CompileExtractor>(CompileExtractor::load(model, task, state_dim, action_dim)), model};
-  const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
-  const int slices = parking ? kParkingTimeSlices : kWritingTimeSlices;
-  std::string why = "assets/models/" + task + ".pt: missing";
-  if (std::filesystem::exists(shipped)) {
-    try {
-      return {std::make_unique<CompileExtractor>(CompileExtractor::load(shipped, task, state_dim, action_dim)),
-              shipped.string()};
-    } catch (const InputError& e) {
-      why = e.what();
-    }
-  }
-  std::fprintf(stderr, "skillcoach: note: %s; using the time heuristic\n", why.c_str());
-  return {std::make_unique<TimeHeuristicExtractor>(slices), ""};
-}
-
 Json segmentation_json(const Segmentation& s) {
   Json segments = Json::array();
   for (const SkillSegment& seg : s.segments)
@@ -79,9 +50,10 @@ int run(const SegmentArgs& args) {
   const std::string task(to_string(args.task));
   if (!doc.is_object() || !doc.contains("task") || doc["task"] != task)
     throw InputError(args.trial, "not a " + task + " trial ($.task is not \"" + task + "\")");
-  Chosen chosen = choose_extractor(args.task, args.model);
+  const ChosenExtractor chosen = choose_skill_extractor(args.task, args.model);
+  if (!chosen.notice.empty()) std::fprintf(stderr, "skillcoach: note: %s\n", chosen.notice.c_str());
   // A parking trial is read as the kit reads a learner's drive (parking_drive_reading.hpp).
-  std::shared_ptr<const SkillExtractor> extractor = std::move(chosen.extractor);
+  std::shared_ptr<const SkillExtractor> extractor = chosen.extractor;
   if (args.task == TaskKind::parking)
     extractor = parking_drive_reader(std::move(extractor), shipped_pool_piece_length());
 
@@ -105,7 +77,7 @@ int run(const SegmentArgs& args) {
   try {
     segmentation = extractor->extract(steps);
   } catch (const InputError& e) {
-    throw InputError(args.trial, std::string(e.what()) + " (model " + chosen.model + ")");
+    throw InputError(args.trial, std::string(e.what()) + " (model " + chosen.model.string() + ")");
   }
 
   Json out = segmentation_json(segmentation);
@@ -113,13 +85,12 @@ int run(const SegmentArgs& args) {
   out["file"] = args.trial;
   out["steps"] = steps.length();
   out["extractor"] = extractor->name();
-  out["model"] = chosen.model.empty() ? Json(nullptr) : Json(chosen.model);
+  out["model"] = chosen.model.empty() ? Json(nullptr) : Json(chosen.model.string());
   if (!args.png.empty()) {
     const auto [width, height] = parse_size(args.size, "--size");
     const std::string caption =
         std::filesystem::path(args.trial).filename().string() + "  \xc2\xb7  " +
-        (chosen.model.empty() ? "time heuristic"
-                              : "CompILE " + std::filesystem::path(chosen.model).filename().string());
+        (chosen.model.empty() ? "time heuristic" : "CompILE " + chosen.model.filename().string());
     write_png(args.png, parking
                             ? render_parking_segments(*parking, segmentation, caption, width, height)
                             : render_writing_segments(*writing_trial, points, segmentation, caption, width, height));

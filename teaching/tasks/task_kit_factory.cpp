@@ -2,25 +2,26 @@
 
 #include "engine/core/asset_paths.hpp"
 #include "engine/core/error.hpp"
+#include "engine/writing/step_data.hpp"
 #include "teaching/skills/compile_extractor.hpp"
 #include "teaching/skills/time_heuristic_extractor.hpp"
 #include "teaching/tasks/parking_kit.hpp"
+#include "teaching/tasks/parking_steps.hpp"
 #include "teaching/tasks/writing_kit.hpp"
 #include "teaching/tasks/writing_noise_floor.hpp"
 
 namespace sc {
-namespace {
-
-struct ChosenExtractor {
-  std::shared_ptr<const SkillExtractor> extractor;
-  std::string notice;           // why the time heuristic is used; empty for the trained model
-  std::filesystem::path model;  // the model file loaded; empty for the time heuristic
-};
 
 ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::path& model) {
   const std::string task(to_string(kind));
-  if (!model.empty()) return {std::make_shared<CompileExtractor>(CompileExtractor::load(model, task)), "", model};
-  const int slices = kind == TaskKind::parking ? kParkingTimeSlices : kWritingTimeSlices;
+  const bool parking = kind == TaskKind::parking;
+  const int state_dim = parking ? kParkingStateDim : writing::kWritingStateDim;
+  const int action_dim = parking ? kParkingActionDim : 2;
+  auto load = [&](const std::filesystem::path& file) {
+    return std::make_shared<CompileExtractor>(CompileExtractor::load(file, task, state_dim, action_dim));
+  };
+  if (!model.empty()) return {load(model), "", model};
+  const int slices = parking ? kParkingTimeSlices : kWritingTimeSlices;
   const std::string relative = "assets/models/" + task + ".pt";
   const std::filesystem::path shipped = asset_dir() / "models" / (task + ".pt");
   // The missing case names the asset relative to the asset folder, so the notice (shown on screen and in
@@ -28,16 +29,15 @@ ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::pat
   if (!std::filesystem::exists(shipped))
     return {std::make_shared<TimeHeuristicExtractor>(slices), relative + ": missing; using the time heuristic", {}};
   try {
-    return {std::make_shared<CompileExtractor>(CompileExtractor::load(shipped, task)), "", shipped};
+    return {load(shipped), "", shipped};
   } catch (const InputError& e) {
     return {std::make_shared<TimeHeuristicExtractor>(slices), std::string(e.what()) + "; using the time heuristic", {}};
   }
 }
 
-}  // namespace
-
 std::unique_ptr<TaskKit> make_parking_kit(const std::filesystem::path& model, GoalRegion region,
-                                          std::optional<NoiseFloor> execution_noise_floor, ParkingDriveReading reading) {
+                                          std::optional<NoiseFloor> execution_noise_floor,
+                                          ParkingDriveReading reading) {
   ChosenExtractor chosen = choose_skill_extractor(TaskKind::parking, model);
   return std::make_unique<ParkingKit>(
       chosen.extractor, chosen.notice,

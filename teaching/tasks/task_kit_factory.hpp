@@ -15,6 +15,16 @@
 
 namespace sc {
 
+// The skill extractor for `kind`: the model file `model` when given (its InputError propagates: the user asked for
+// it), else the shipped assets/models/<task>.pt, else the time heuristic with a notice saying why. Models are checked
+// for their task and the task's state and action dimensions.
+struct ChosenExtractor {
+  std::shared_ptr<const SkillExtractor> extractor;
+  std::string notice;           // why the time heuristic is used; empty for the trained model
+  std::filesystem::path model;  // the model file loaded; empty for the time heuristic
+};
+ChosenExtractor choose_skill_extractor(TaskKind kind, const std::filesystem::path& model);
+
 // InputError when the task's data is missing. A non-empty
 // `model` must load (the user asked for it: its InputError propagates); an empty one means the shipped model.
 // Parking draws its pool and fresh scenarios in `region` (the shipped pool of that region); writing has no
