@@ -199,7 +199,7 @@ class DriverIntent {
     ParkingAction intent = clip_action(expert_.actions[step]);
     braking_run_ = !braking_.empty() && braking_[step] ? braking_run_ + 1 : 0;
     if (p_.follows_path) {
-      // What it would have decided at k + s - delay: the car it saw then, where the expert was a delay before.
+      // What it decided a reaction delay ago: from the car it saw then, towards where the expert was a delay before.
       const ParkingAction d = follower_->correction(seen[static_cast<std::size_t>(source + t_.wait)],
                                                     (source - t_.delay) * t_.substeps_per_sample);
       intent = clip_action({intent[0] + d[0], intent[1] + d[1]});
