@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/core/error.hpp"
+#include "teaching/skills/step_range.hpp"
 
 namespace sc {
 namespace {
@@ -19,18 +20,6 @@ std::vector<Piece> pieces_of(int length, int piece_length) {
     const auto end = static_cast<int>(static_cast<long long>(length) * (k + 1) / n);
     out.push_back({begin, end});
   }
-  return out;
-}
-
-StepSequence steps_of(const StepSequence& steps, Piece piece) {
-  StepSequence out;
-  out.state_dim = steps.state_dim;
-  out.action_dim = steps.action_dim;
-  if (!steps.states.empty())
-    out.states.assign(steps.states.begin() + static_cast<std::ptrdiff_t>(piece.begin) * steps.state_dim,
-                      steps.states.begin() + static_cast<std::ptrdiff_t>(piece.end) * steps.state_dim);
-  out.actions.assign(steps.actions.begin() + static_cast<std::ptrdiff_t>(piece.begin) * steps.action_dim,
-                     steps.actions.begin() + static_cast<std::ptrdiff_t>(piece.end) * steps.action_dim);
   return out;
 }
 
@@ -64,18 +53,14 @@ std::vector<Segmentation> PiecewiseExtractor::extract_all(const std::vector<Step
       pieces.push_back(t);
       continue;
     }
-    for (Piece p : places.back()) pieces.push_back(steps_of(t, p));
+    for (Piece p : places.back()) pieces.push_back(steps_between(t, p.begin, p.end));
   }
   const std::vector<Segmentation> read = inner_->extract_all(pieces);
   std::vector<Segmentation> out(trajectories.size());
   std::size_t next = 0;
   for (std::size_t i = 0; i < trajectories.size(); ++i) {
     for (Piece p : places[i]) {
-      for (SkillSegment s : read[next++].segments) {
-        s.begin += p.begin;
-        s.end += p.begin;
-        out[i].segments.push_back(s);
-      }
+      for (const SkillSegment& s : shifted(read[next++], p.begin).segments) out[i].segments.push_back(s);
     }
   }
   return out;

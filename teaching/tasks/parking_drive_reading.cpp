@@ -10,10 +10,7 @@ namespace sc {
 
 int longest_moving_drive(const std::vector<StepSequence>& drives) {
   int longest = 1;
-  for (const StepSequence& d : drives) {
-    const int moving = d.length() - standing_start_steps(d) - standing_end_steps(d);
-    longest = std::max(longest, moving);
-  }
+  for (const StepSequence& d : drives) longest = std::max(longest, moving_part_length(d));
   return longest;
 }
 

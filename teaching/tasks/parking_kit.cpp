@@ -68,10 +68,11 @@ void ParkingKit::build(std::vector<ParkingTrial> pool) {
     d.reward = t.rewards.empty() ? 0.0 : t.rewards.back();
     demos_.push_back(std::move(d));
   }
-  piece_length_ = longest_moving_drive(demo_steps(demos_));
+  const std::vector<StepSequence> steps = demo_steps(demos_);
+  piece_length_ = longest_moving_drive(steps);
   extractor_ = parking_drive_reader(std::move(extractor_), piece_length_, reading_);
   segment_expert_demos(demos_, *extractor_, kParkingTimeSlices);
-  motions_ = parking_skill_motions(demo_steps(demos_), demo_skills(demos_), extractor_->num_skills());
+  motions_ = parking_skill_motions(steps, demo_skills(demos_), extractor_->num_skills());
   descriptions_ = describe_parking_motions(motions_);
   projector_ = std::make_unique<ParkingDrillProjector>(std::move(pool));
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/error.hpp"
+#include "teaching/skills/step_range.hpp"
 #include "teaching/tasks/parking_steps.hpp"
 
 namespace sc {
@@ -31,22 +32,8 @@ MovingPart moving_part(const StepSequence& steps) {
   return {start, std::min(end, length)};
 }
 
-StepSequence steps_of(const StepSequence& steps, MovingPart part) {
-  StepSequence out;
-  out.state_dim = steps.state_dim;
-  out.action_dim = steps.action_dim;
-  out.states.assign(steps.states.begin() + static_cast<std::ptrdiff_t>(part.begin) * steps.state_dim,
-                    steps.states.begin() + static_cast<std::ptrdiff_t>(part.end) * steps.state_dim);
-  out.actions.assign(steps.actions.begin() + static_cast<std::ptrdiff_t>(part.begin) * steps.action_dim,
-                     steps.actions.begin() + static_cast<std::ptrdiff_t>(part.end) * steps.action_dim);
-  return out;
-}
-
 Segmentation stretched(Segmentation s, MovingPart part, int length) {
-  for (SkillSegment& seg : s.segments) {
-    seg.begin += part.begin;
-    seg.end += part.begin;
-  }
+  s = shifted(std::move(s), part.begin);
   if (!s.segments.empty()) {
     s.segments.front().begin = 0;
     s.segments.back().end = length;
@@ -65,6 +52,11 @@ int standing_start_steps(const StepSequence& steps) {
   // The speed after step k is the speed before step k + 1.
   while (k + 1 < length && speed_before(steps, k + 1) < kStandingSpeed) ++k;
   return k;
+}
+
+int moving_part_length(const StepSequence& steps) {
+  const MovingPart part = moving_part(steps);
+  return part.end - part.begin;
 }
 
 int standing_end_steps(const StepSequence& steps) {
@@ -87,7 +79,7 @@ Segmentation ParkingMovingPartExtractor::extract(const StepSequence& trajectory)
   const MovingPart part = moving_part(trajectory);
   const int length = trajectory.length();
   if (length == 0 || whole(part, length)) return inner_->extract(trajectory);
-  return stretched(inner_->extract(steps_of(trajectory, part)), part, length);
+  return stretched(inner_->extract(steps_between(trajectory, part.begin, part.end)), part, length);
 }
 
 std::vector<Segmentation> ParkingMovingPartExtractor::extract_all(const std::vector<StepSequence>& trajectories) const {
@@ -97,7 +89,9 @@ std::vector<Segmentation> ParkingMovingPartExtractor::extract_all(const std::vec
   moving.reserve(trajectories.size());
   for (const StepSequence& t : trajectories) {
     parts.push_back(moving_part(t));
-    moving.push_back(t.length() == 0 || whole(parts.back(), t.length()) ? t : steps_of(t, parts.back()));
+    moving.push_back(t.length() == 0 || whole(parts.back(), t.length())
+                         ? t
+                         : steps_between(t, parts.back().begin, parts.back().end));
   }
   std::vector<Segmentation> out = inner_->extract_all(moving);
   for (std::size_t i = 0; i < out.size(); ++i) {

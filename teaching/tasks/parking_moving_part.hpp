@@ -35,6 +35,8 @@ inline constexpr double kStandingSpeed = 0.5;  // m/s
 // any other kind of sequence.
 int standing_start_steps(const StepSequence& steps);
 int standing_end_steps(const StepSequence& steps);
+// The steps ParkingMovingPartExtractor reads of `steps` (the whole length for any other kind of sequence).
+int moving_part_length(const StepSequence& steps);
 
 class ParkingMovingPartExtractor final : public SkillExtractor {
  public:
