@@ -242,9 +242,9 @@ TEST_F(DeviceManagerTest, KeyboardEventsDriveAndFocusLossReleasesKeys) {
   EXPECT_TRUE(devices.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_UP)));
   EXPECT_TRUE(devices.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_A)));
   EXPECT_FALSE(devices.handle_event(key_event(SDL_KEYDOWN, SDL_SCANCODE_SPACE)));
-  EXPECT_EQ(devices.action(), (DriveAction{0.7, -0.7}));
+  EXPECT_EQ(devices.action(), (DriveAction{1.0, -1.0}));
   devices.handle_event(key_event(SDL_KEYUP, SDL_SCANCODE_A));
-  EXPECT_EQ(devices.action(), (DriveAction{0.7, 0.0}));
+  EXPECT_EQ(devices.action(), (DriveAction{1.0, 0.0}));
   SDL_Event focus{};
   focus.type = SDL_WINDOWEVENT;
   focus.window.event = SDL_WINDOWEVENT_FOCUS_LOST;

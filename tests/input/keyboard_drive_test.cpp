@@ -5,18 +5,18 @@
 namespace sc::input {
 namespace {
 
-TEST(KeyboardDrive, HeldKeyGivesPointSevenAndReleaseGivesZero) {
+TEST(KeyboardDrive, HeldKeyGivesFullDeflectionAndReleaseGivesZero) {
   KeyboardDrive k;
   k.set_pressed(DriveKey::Up, true);
-  EXPECT_EQ(k.action(), (DriveAction{0.7, 0.0}));
+  EXPECT_EQ(k.action(), (DriveAction{1.0, 0.0}));
   k.set_pressed(DriveKey::Up, false);
   EXPECT_EQ(k.action(), (DriveAction{0.0, 0.0}));
   k.set_pressed(DriveKey::Down, true);
   k.set_pressed(DriveKey::Left, true);
-  EXPECT_EQ(k.action(), (DriveAction{-0.7, -0.7}));
+  EXPECT_EQ(k.action(), (DriveAction{-1.0, -1.0}));
   k.set_pressed(DriveKey::Left, false);
   k.set_pressed(DriveKey::Right, true);
-  EXPECT_EQ(k.action(), (DriveAction{-0.7, 0.7}));
+  EXPECT_EQ(k.action(), (DriveAction{-1.0, 1.0}));
 }
 
 TEST(KeyboardDrive, OppositeKeysCancelAndReleasingOneRestoresTheOther) {
@@ -25,7 +25,7 @@ TEST(KeyboardDrive, OppositeKeysCancelAndReleasingOneRestoresTheOther) {
   k.set_pressed(DriveKey::Right, true);
   EXPECT_EQ(k.action().steer, 0.0);
   k.set_pressed(DriveKey::Right, false);  // the reference would leave 0 here although Left is held
-  EXPECT_EQ(k.action().steer, -0.7);
+  EXPECT_EQ(k.action().steer, -1.0);
   k.set_pressed(DriveKey::W, true);
   k.set_pressed(DriveKey::S, true);
   EXPECT_EQ(k.action().accel, 0.0);
@@ -35,12 +35,12 @@ TEST(KeyboardDrive, ArrowsAndWasdForTheSameDirectionDoNotAddUp) {
   KeyboardDrive k;
   k.set_pressed(DriveKey::Up, true);
   k.set_pressed(DriveKey::W, true);
-  EXPECT_EQ(k.action().accel, 0.7);
+  EXPECT_EQ(k.action().accel, 1.0);
   k.set_pressed(DriveKey::W, false);
-  EXPECT_EQ(k.action().accel, 0.7);  // Up still held
+  EXPECT_EQ(k.action().accel, 1.0);  // Up still held
   k.set_pressed(DriveKey::D, true);
   k.set_pressed(DriveKey::Right, true);
-  EXPECT_EQ(k.action().steer, 0.7);
+  EXPECT_EQ(k.action().steer, 1.0);
 }
 
 TEST(KeyboardDrive, ReleaseAllForgetsEveryKey) {

@@ -15,7 +15,7 @@
 //                 (0.12) and disc->square map;
 //      mouse    - the on-screen joystick's knob at the same point, action_for_knob (no dead zone);
 //      keyboard - intent + wander per axis, a key is held when it reaches half the key action, giving
-//                 {-0.7, 0, +0.7} (KeyboardDrive::kKeyAction): the quantisation of a keyboard;
+//                 {-1, 0, +1} (KeyboardDrive::kKeyAction): the quantisation of a keyboard;
 //  * the input rate: control_hz 15 records one action per 1/15 s sub-step (the app's "responsive" mode,
 //    the recorded trial has control_hz 15), control_hz 5 one per 0.2 s control step;
 //  * optionally a planted deficit (PlantedDeficit), applied last, to the action the car receives; a late
@@ -78,7 +78,7 @@ RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng);
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& profile, Rng& rng);
 
 // The keys a keyboard driver holds for `intent`, per axis: a key when the intent reaches half the key action,
-// giving {-0.7, 0, +0.7} (KeyboardDrive::kKeyAction).
+// giving {-1, 0, +1} (KeyboardDrive::kKeyAction).
 ParkingAction keyboard_keys(const ParkingAction& intent);
 // The same control steps with keyboard_keys for every (u0, u1) action and the states kept: the expert's
 // motion read through keyboard values (keyed copies in training, keyed_action_agreement).

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/error.hpp"
+#include "engine/parking/parking_sim.hpp"
 #include "teaching/learners/parking/path_follower.hpp"
 #include "teaching/tasks/parking_expert_pool.hpp"
 #include "teaching/tasks/parking_steps.hpp"
@@ -83,7 +84,7 @@ TEST(RealisticDriver, KeyboardGivesOnlyKeyActionsAt15Hz) {
   int held = 0;
   for (const ParkingAction& u : d.actions)
     for (double v : u) {
-      EXPECT_TRUE(v == 0.0 || std::abs(std::abs(v) - 0.7) < 1e-12) << v;
+      EXPECT_TRUE(v == 0.0 || std::abs(v) == 1.0) << v;
       held += v != 0.0;
     }
   EXPECT_GT(held, 0);
@@ -200,9 +201,27 @@ TEST(RealisticDriver, NoviceProfilesStayInTheirDocumentedRanges) {
 }
 
 TEST(RealisticDriver, KeyboardKeysAreHeldFromHalfTheKeyAction) {
-  EXPECT_EQ(keyboard_keys({0.8, -0.3}), (ParkingAction{0.7, 0.0}));
-  EXPECT_EQ(keyboard_keys({-0.35, 0.36}), (ParkingAction{-0.7, 0.7}));
-  EXPECT_EQ(keyboard_keys({0.34, -0.34}), (ParkingAction{0.0, 0.0}));
+  EXPECT_EQ(keyboard_keys({0.8, -0.3}), (ParkingAction{1.0, 0.0}));
+  EXPECT_EQ(keyboard_keys({-0.5, 0.51}), (ParkingAction{-1.0, 1.0}));
+  EXPECT_EQ(keyboard_keys({0.49, -0.49}), (ParkingAction{0.0, 0.0}));
+}
+
+// The expert drives with the pedal at its limit, so the keys must reach it: a drive of full-deflection and neutral
+// actions is one a keyboard reproduces exactly, motion and all.
+TEST(RealisticDriver, KeyboardReproducesADriveAtFullDeflectionExactly) {
+  ParkingTrial e;
+  e.scenario = parking_pool_scenario(0, 0);
+  for (int i = 0; i < 6; ++i) e.actions.push_back({1.0, -1.0});
+  for (int i = 0; i < 3; ++i) e.actions.push_back({-1.0, 0.0});
+  for (int i = 0; i < 6; ++i) e.actions.push_back({-1.0, 1.0});
+  e.source = "expert";
+  Rng rng(1);
+  const ParkingTrial d = realistic_drive(e, clean(DriveDevice::Keyboard, 5), rng);
+  ASSERT_EQ(d.actions.size(), e.actions.size());
+  EXPECT_EQ(d.actions, e.actions);
+  ParkingSim sim(e.scenario);
+  for (const ParkingAction& u : e.actions) sim.step(u);
+  EXPECT_EQ(d.states.back(), sim.observation());
 }
 
 }  // namespace
