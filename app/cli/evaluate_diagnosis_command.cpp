@@ -7,7 +7,7 @@
 // quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
 // --start-wait S / --end-wait S make every learner stand still S seconds before / after driving, --keeps-trying
-// makes it drive on until the time limit;
+// makes it drive on until the time limit, --keyboard-shift makes the keyboard learners hold Shift to steer gently;
 // --read-whole-drives and --read-in-one-piece read drives as the kit did before 2026-12-05 / 2026-12-06
 // (ParkingKitOptions::reading).
 #include <CLI/CLI.hpp>
@@ -43,6 +43,7 @@ struct EvaluateDiagnosisArgs {
   double start_wait = 0.0;
   double end_wait = 0.0;
   bool keeps_trying = false;
+  bool keyboard_shift = false;
   ParkingDriveReading reading;
 };
 
@@ -103,17 +104,22 @@ int run(const EvaluateDiagnosisArgs& args) {
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
   const PlantedLearners run{select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
-                            args.seed, args.start_wait, args.end_wait, args.keeps_trying};
+                            args.seed,
+                            args.start_wait,
+                            args.end_wait,
+                            args.keeps_trying,
+                            args.keyboard_shift};
   std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives",
               kit->extractor().name().c_str(), args.learners, args.seed, run.pretest.size());
   if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);
   if (args.end_wait > 0.0) std::printf(", standing %.1f s after driving", args.end_wait);
   if (args.keeps_trying) std::printf(", driving on until the time limit");
+  if (args.keyboard_shift) std::printf(", keyboard learners steering gently with Shift");
   if (args.reading.whole_drive) std::printf(", drives read whole (standing still included)");
   if (args.reading.one_piece) std::printf(", long drives read in one piece");
   if (!args.reading.whole_drive && !args.reading.one_piece)
-    std::printf(", drives of %d steps or more read in pieces of about %d",
-                shortest_split_length(kit->piece_length()), kit->piece_length());
+    std::printf(", drives of %d steps or more read in pieces of about %d", shortest_split_length(kit->piece_length()),
+                kit->piece_length());
   std::printf("\n");
   for (PlantedDeficit d : {PlantedDeficit::NeverReversing, PlantedDeficit::WeakSteering, PlantedDeficit::LateBraking})
     std::printf("  %s skills: %s\n", deficit_name(d).c_str(),
@@ -184,6 +190,9 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   sub.add_flag("--keeps-trying", args->keeps_trying,
                "Every learner drives on after the expert's plan, towards where the expert's drive ended, until the "
                "trainer's time limit, as one who has not parked does (--end-wait comes first)");
+  sub.add_flag("--keyboard-shift", args->keyboard_shift,
+               "The keyboard learners hold Shift where the expert steers nearer half lock than full lock or straight "
+               "(the tables' keyboard learners use the arrows alone)");
   sub.add_flag("--read-whole-drives", args->reading.whole_drive,
                "Research: read each drive whole, standing still at its ends included, as before 2026-12-05 "
                "(the kit reads from the first to the last moving step; docs/skills.md, \"A standing start\")");

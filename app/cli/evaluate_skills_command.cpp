@@ -97,6 +97,7 @@ Json realistic_driver_rows(const SkillExtractor& extractor, const std::vector<Pa
   for (DriveCondition& c : path_following_conditions()) conditions.push_back(std::move(c));  // appended: same draws
   for (DriveCondition& c : standing_start_conditions()) conditions.push_back(std::move(c));
   for (DriveCondition& c : keeps_trying_conditions()) conditions.push_back(std::move(c));
+  for (DriveCondition& c : gentle_steering_key_conditions()) conditions.push_back(std::move(c));
   Json rows = Json::array();
   for (const AgreementRow& r : measure_drive_agreement(extractor, drives, conditions, seed)) {
     rows.push_back({{"condition", r.condition},

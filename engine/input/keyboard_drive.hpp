@@ -1,7 +1,8 @@
 #pragma once
-// Keyboard driving: a held key commands full deflection (±1) on its axis, 0 when released. Arrows and WASD both
-// work; the mapping is the driver's view (up/W = forward, down/S = reverse/brake, left/A and right/D = steer)
-// rather than the upstream pygame handler's.
+// Keyboard driving: a held key commands full deflection (±1) on its axis, 0 when released; with Shift held the
+// steering keys give half lock, because the expert steers between straight and full lock most of the time and a
+// key alone cannot. Arrows and WASD both work; the mapping is the driver's view (up/W = forward, down/S =
+// reverse/brake, left/A and right/D = steer) rather than the upstream pygame handler's.
 // Difference from the reference (reference-facts §1.9 holds a key at ±0.7), on purpose: the expert's plans keep
 // the pedal at its limit nearly all the time, so at ±0.7 a keyboard learner cannot make the expert's motion
 // (docs/skills.md, *Keys at full deflection*).
@@ -15,11 +16,12 @@
 
 namespace sc::input {
 
-enum class DriveKey : std::uint8_t { Up, Down, Left, Right, W, A, S, D };
+enum class DriveKey : std::uint8_t { Up, Down, Left, Right, W, A, S, D, LeftShift, RightShift };
 
 class KeyboardDrive {
  public:
-  static constexpr double kKeyAction = 1.0;  // the reference's is 0.7 (above)
+  static constexpr double kKeyAction = 1.0;    // the reference's is 0.7 (above)
+  static constexpr double kGentleSteer = 0.5;  // a steering key with Shift held
 
   void set_pressed(DriveKey key, bool pressed);
   // Window lost focus: key-up events will not arrive, so forget every held key.
@@ -28,7 +30,7 @@ class KeyboardDrive {
   DriveAction action() const;
 
  private:
-  std::uint8_t held_ = 0;  // one bit per DriveKey
+  std::uint16_t held_ = 0;  // one bit per DriveKey
 };
 
 }  // namespace sc::input

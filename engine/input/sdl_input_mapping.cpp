@@ -37,6 +37,10 @@ std::optional<DriveKey> drive_key_for_scancode(SDL_Scancode scancode) {
       return DriveKey::S;
     case SDL_SCANCODE_D:
       return DriveKey::D;
+    case SDL_SCANCODE_LSHIFT:
+      return DriveKey::LeftShift;
+    case SDL_SCANCODE_RSHIFT:
+      return DriveKey::RightShift;
     default:
       return std::nullopt;
   }

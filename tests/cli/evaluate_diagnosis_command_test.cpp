@@ -20,16 +20,18 @@ int table_rows(const std::string& output) {
 TEST(EvaluateDiagnosisCommand, LearnersWhoStandStillReadWholeAreSaidSoAboveTheTable) {
   const auto r = run_skillcoach(
       "evaluate-diagnosis --task parking --learners 2 --seed 14 --start-wait 1 --end-wait 5 --keeps-trying "
-      "--read-whole-drives");
+      "--keyboard-shift --read-whole-drives");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("each learner standing 1.0 s before driving"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("standing 5.0 s after driving"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("driving on until the time limit"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("keyboard learners steering gently with Shift"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("drives read whole"), std::string::npos) << r.output;
   EXPECT_EQ(table_rows(r.output), 8 + 1) << r.output;  // the header, then 4 deficits x 2 modes
   const auto plain = run_skillcoach("evaluate-diagnosis --task parking --learners 2 --seed 14");
   ASSERT_EQ(plain.exit_code, 0) << plain.output;
   EXPECT_EQ(plain.output.find("standing"), std::string::npos) << plain.output;
+  EXPECT_EQ(plain.output.find("Shift"), std::string::npos) << plain.output;
   EXPECT_EQ(plain.output.find("read whole"), std::string::npos) << plain.output;
   EXPECT_EQ(plain.output.find("one piece"), std::string::npos) << plain.output;
   // The shipped pool's longest drive moves for 26 control steps.

@@ -75,8 +75,9 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
                                 test::tiny_model("parking").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json rows = report_json_of(r.output).at("realistic_drivers");
-  // 8 open loop, 7 following the path, 4 standing still at the start or end, 1 driving on until 15 s
-  ASSERT_EQ(rows.size(), 20u);
+  // 8 open loop, 7 following the path, 4 standing still at the start or end, 1 driving on until 15 s, 2 keyboards
+  // with Shift for gentle steering
+  ASSERT_EQ(rows.size(), 22u);
   // 15 Hz input without noise or delay changes nothing a skill model sees, beyond the gamepad's dead zone.
   EXPECT_GE(rows[0].at("agreement").get<double>(), 0.9) << rows[0];
   EXPECT_NE(rows[8].at("condition").get<std::string>().find("follows the path"), std::string::npos) << rows[8];
@@ -84,6 +85,7 @@ TEST(EvaluateSkillsCommand, ParkingRealisticDriversGiveOneAgreementPerCondition)
   EXPECT_EQ(rows[15].at("condition"), "gamepad, no noise, delay 0.2 s, 15 Hz");
   EXPECT_DOUBLE_EQ(rows[15].at("agreement").get<double>(), rows[0].at("agreement").get<double>());
   EXPECT_NE(rows[19].at("condition").get<std::string>().find("keeps trying"), std::string::npos) << rows[19];
+  EXPECT_EQ(rows[20].at("condition"), "keyboard with Shift, no noise, no delay, 15 Hz");
   const Json limits = report_json_of(r.output).at("expert_actions_at_limits");
   EXPECT_GT(limits.at("steps").get<int>(), 0) << limits;
   EXPECT_GE(limits.at("pedal").get<double>(), 0.0) << limits;

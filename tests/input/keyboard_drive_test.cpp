@@ -43,9 +43,22 @@ TEST(KeyboardDrive, ArrowsAndWasdForTheSameDirectionDoNotAddUp) {
   EXPECT_EQ(k.action().steer, 1.0);
 }
 
+TEST(KeyboardDrive, EitherShiftHalvesTheSteeringKeysButNotThePedal) {
+  KeyboardDrive k;
+  k.set_pressed(DriveKey::Up, true);
+  k.set_pressed(DriveKey::Left, true);
+  k.set_pressed(DriveKey::LeftShift, true);
+  EXPECT_EQ(k.action(), (DriveAction{1.0, -0.5}));
+  k.set_pressed(DriveKey::RightShift, true);
+  k.set_pressed(DriveKey::LeftShift, false);  // the other Shift is still held
+  EXPECT_EQ(k.action(), (DriveAction{1.0, -0.5}));
+  k.set_pressed(DriveKey::RightShift, false);
+  EXPECT_EQ(k.action(), (DriveAction{1.0, -1.0}));
+}
+
 TEST(KeyboardDrive, ReleaseAllForgetsEveryKey) {
   KeyboardDrive k;
-  for (DriveKey key : {DriveKey::Up, DriveKey::A, DriveKey::Right}) k.set_pressed(key, true);
+  for (DriveKey key : {DriveKey::Up, DriveKey::A, DriveKey::Right, DriveKey::RightShift}) k.set_pressed(key, true);
   k.release_all();
   EXPECT_EQ(k.action(), DriveAction{});
   EXPECT_FALSE(k.pressed(DriveKey::Up));

@@ -34,6 +34,8 @@ TEST(SdlKeys, ArrowsAndWasdByPhysicalPosition) {
   EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_A), DriveKey::A);
   EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_S), DriveKey::S);
   EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_D), DriveKey::D);
+  EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_LSHIFT), DriveKey::LeftShift);
+  EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_RSHIFT), DriveKey::RightShift);
   EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_Q), std::nullopt);
   EXPECT_EQ(drive_key_for_scancode(SDL_SCANCODE_SPACE), std::nullopt);
 }

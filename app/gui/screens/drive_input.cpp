@@ -97,7 +97,7 @@ void DriveInput::update_keyboard(const FrameInput& input) {
     return;
   }
   for (SDL_Scancode code : {SDL_SCANCODE_UP, SDL_SCANCODE_DOWN, SDL_SCANCODE_LEFT, SDL_SCANCODE_RIGHT, SDL_SCANCODE_W,
-                            SDL_SCANCODE_A, SDL_SCANCODE_S, SDL_SCANCODE_D})
+                            SDL_SCANCODE_A, SDL_SCANCODE_S, SDL_SCANCODE_D, SDL_SCANCODE_LSHIFT, SDL_SCANCODE_RSHIFT})
     if (const auto key = input::drive_key_for_scancode(code)) keyboard_.set_pressed(*key, input.keys_down[code]);
 }
 

@@ -268,7 +268,7 @@ class FreeDriveScreen final : public Screen {
       case DeviceKind::gamepad:
         return "Left stick: steer, up to drive, down to brake/reverse.\nStart pauses.";
       case DeviceKind::keyboard:
-        return "Arrows or WASD: up drives, down brakes/reverses.\nEsc pauses.";
+        return "Arrows or WASD: up drives, down brakes/reverses.\nHold Shift to steer gently. Esc pauses.";
       case DeviceKind::mouse_joystick:
         return "Drag the stick at the right: up drives, down reverses.\nEsc pauses.";
       case DeviceKind::mouse_pen:

@@ -19,10 +19,12 @@ constexpr ImU32 kAccent = IM_COL32(91, 155, 255, 255);
 constexpr ImU32 kGhost = IM_COL32(91, 155, 255, 70);
 constexpr ImU32 kTrail = IM_COL32(255, 226, 138, 230);
 
-void key_cap(ImDrawList& d, ImVec2 at, float size, const char* label, bool lit) {
-  d.AddRectFilled(at, ImVec2(at.x + size, at.y + size), lit ? kAccent : IM_COL32(50, 58, 74, 255), size * 0.15f);
+// A key `width` wide and `size` high (a square key when width is 0).
+void key_cap(ImDrawList& d, ImVec2 at, float size, const char* label, bool lit, float width = 0.0f) {
+  const float w = width > 0.0f ? width : size;
+  d.AddRectFilled(at, ImVec2(at.x + w, at.y + size), lit ? kAccent : IM_COL32(50, 58, 74, 255), size * 0.15f);
   const ImVec2 t = ImGui::CalcTextSize(label);
-  d.AddText(ImVec2(at.x + (size - t.x) * 0.5f, at.y + (size - t.y) * 0.5f), kInk, label);
+  d.AddText(ImVec2(at.x + (w - t.x) * 0.5f, at.y + (size - t.y) * 0.5f), kInk, label);
 }
 
 // The device in a box of w x h pixels at `o`.
@@ -30,11 +32,12 @@ void draw_device(ImDrawList& d, ImVec2 o, float w, float h, DeviceKind kind) {
   const ImVec2 c(o.x + w * 0.5f, o.y + h * 0.5f);
   switch (kind) {
     case DeviceKind::keyboard: {
-      const float k = h * 0.3f, g = k * 0.12f;
-      key_cap(d, ImVec2(c.x - k * 0.5f, c.y - k - g), k, "^", true);
-      key_cap(d, ImVec2(c.x - k * 1.5f - g, c.y), k, "<", true);
-      key_cap(d, ImVec2(c.x - k * 0.5f, c.y), k, "v", true);
-      key_cap(d, ImVec2(c.x + k * 0.5f + g, c.y), k, ">", true);
+      const float k = h * 0.3f, g = k * 0.12f, x = c.x + k * 1.2f;  // the arrows right of Shift, all centred
+      key_cap(d, ImVec2(x - k * 0.5f, c.y - k - g), k, "^", true);
+      key_cap(d, ImVec2(x - k * 1.5f - g, c.y), k, "<", true);
+      key_cap(d, ImVec2(x - k * 0.5f, c.y), k, "v", true);
+      key_cap(d, ImVec2(x + k * 0.5f + g, c.y), k, ">", true);
+      key_cap(d, ImVec2(x - k * 3.9f - g, c.y), k, "Shift", false, k * 2.1f);  // held: gentle steering
       break;
     }
     case DeviceKind::gamepad: {
@@ -77,7 +80,7 @@ void draw_ghost(ImDrawList& d, ImVec2 o, float w, float h, bool parking) {
 const char* device_words(DeviceKind kind) {
   switch (kind) {
     case DeviceKind::keyboard:
-      return "Up drives forward, Down reverses, Left and Right steer.";
+      return "Up drives forward, Down reverses, Left and Right steer; hold Shift to steer gently.";
     case DeviceKind::gamepad:
       return "The left stick: up/down for throttle and reverse, left/right to steer.";
     case DeviceKind::mouse_joystick:

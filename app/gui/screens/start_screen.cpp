@@ -44,7 +44,7 @@ const char* device_hint(const DeviceChoice& device) {
     case DeviceKind::mouse_joystick:
       return "drag the on-screen stick, as in the study";
     case DeviceKind::keyboard:
-      return "arrow keys";
+      return "arrow keys, Shift to steer gently";
     case DeviceKind::mouse_pen:
       return "hold the button and write";
   }

@@ -96,6 +96,17 @@ std::vector<DriveCondition> keeps_trying_conditions() {
   return {{"gamepad, noise 0.1, delay 0.2 s, keeps trying until 15 s, 15 Hz", trying}};
 }
 
+std::vector<DriveCondition> gentle_steering_key_conditions() {
+  std::vector<DriveCondition> out;
+  for (DriveCondition c : standard_drive_conditions()) {
+    if (c.profile.device != DriveDevice::Keyboard) continue;
+    c.name.replace(0, std::string("keyboard").size(), "keyboard with Shift");
+    c.profile.shift_for_gentle_steering = true;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
 std::vector<AgreementRow> measure_drive_agreement(const SkillExtractor& extractor,
                                                   const std::vector<ParkingTrial>& expert_drives,
                                                   const std::vector<DriveCondition>& conditions, std::uint64_t seed) {

@@ -54,6 +54,9 @@ std::vector<DriveCondition> standing_start_conditions();
 // 15 s (the trainer's time limit of a 25-step drive): the drive runs three to four times as long as the expert's.
 // Its agreement counts the expert's steps only; its skill presence is what Alg. 2 asks of the whole drive.
 std::vector<DriveCondition> keeps_trying_conditions();
+// Keyboard drivers who hold Shift to steer at half lock where the expert steers nearer half than full lock or
+// straight, without and with noise and delay (the two keyboard rows of the standard conditions otherwise).
+std::vector<DriveCondition> gentle_steering_key_conditions();
 
 struct AgreementRow {
   std::string condition;

@@ -33,6 +33,7 @@ std::vector<Json> planted_learner_trials(const ParkingKit& kit, const PlantedLea
   profile.deficit = deficit;
   profile.start_wait_s = run.start_wait_s;
   profile.end_wait_s = run.end_wait_s;
+  profile.shift_for_gentle_steering = run.keyboard_shift && device == DriveDevice::Keyboard;
   std::vector<Json> trials;
   for (std::size_t k = 0; k < pretest.size(); ++k) {
     const Json& expert_doc = kit.expert_pool()[static_cast<std::size_t>(pretest[k])].trial;

@@ -54,6 +54,8 @@ struct PlantedLearners {
   double end_wait_s = 0.0;
   // Each drives on after the expert's plan until the kit's time limit for the drive (keeps_trying_until_s).
   bool keeps_trying = false;
+  // The keyboard learners hold Shift to steer gently (shift_for_gentle_steering; draws nothing).
+  bool keyboard_shift = false;
 };
 
 // Learner `learner`'s pre-test trials (documents), as the spec above drives them.

@@ -41,9 +41,18 @@ double key_axis(double v) {
   return v >= 0.5 * key ? key : (v <= -0.5 * key ? -key : 0.0);
 }
 
+// The nearest of 0, Shift + key and the key alone.
+double gentle_key_axis(double v) {
+  constexpr double gentle = input::KeyboardDrive::kGentleSteer, key = input::KeyboardDrive::kKeyAction;
+  const double size = std::abs(v) < 0.5 * gentle ? 0.0 : (std::abs(v) < 0.5 * (gentle + key) ? gentle : key);
+  return v < 0.0 ? -size : size;
+}
+
 // Intent (u0, u1) plus wander through the device. Wander x is steering, y is throttle (up = forward).
-ParkingAction through_device(DriveDevice device, const ParkingAction& intent, input::Vec2 wander) {
-  if (device == DriveDevice::Keyboard) return keyboard_keys({intent[0] + wander.y, intent[1] + wander.x});
+ParkingAction through_device(const RealisticDriverProfile& p, const ParkingAction& intent, input::Vec2 wander) {
+  const DriveDevice device = p.device;
+  if (device == DriveDevice::Keyboard)
+    return keyboard_keys({intent[0] + wander.y, intent[1] + wander.x}, p.shift_for_gentle_steering);
   const input::Vec2 aim = input::square_to_disc({std::clamp(intent[1], -1.0, 1.0), std::clamp(intent[0], -1.0, 1.0)});
   const input::Vec2 stick{aim.x + wander.x, aim.y + wander.y};
   if (device == DriveDevice::Gamepad) {
@@ -123,7 +132,9 @@ std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
   return out;
 }
 
-ParkingAction keyboard_keys(const ParkingAction& intent) { return {key_axis(intent[0]), key_axis(intent[1])}; }
+ParkingAction keyboard_keys(const ParkingAction& intent, bool shift_for_gentle_steering) {
+  return {key_axis(intent[0]), shift_for_gentle_steering ? gentle_key_axis(intent[1]) : key_axis(intent[1])};
+}
 
 StepSequence with_keyboard_keys(StepSequence steps) {
   if (steps.action_dim < 2) return steps;
@@ -249,8 +260,7 @@ ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverPr
     for (int s = 0; s < t.per_step; ++s) {
       if (intent.follows()) seen.push_back(car);
       const ParkingAction wanted = intent.at(k + s - t.delay - t.wait, seen, speed);
-      const ParkingAction u =
-          with_deficit(through_device(p.device, wanted, wander.next(rng)), p.deficit, speed, p.control_hz);
+      const ParkingAction u = with_deficit(through_device(p, wanted, wander.next(rng)), p.deficit, speed, p.control_hz);
       speed += clip_action(u)[0] * parking::kMaxAcceleration / p.control_hz;
       for (int h = 0; intent.follows() && h < t.substeps_per_sample; ++h)  // where the driver will see the car next
         car = bicycle_substep(car, acceleration_of(clip_action(u)), steering_of(clip_action(u)));

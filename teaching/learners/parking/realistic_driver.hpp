@@ -15,7 +15,8 @@
 //                 (0.12) and disc->square map;
 //      mouse    - the on-screen joystick's knob at the same point, action_for_knob (no dead zone);
 //      keyboard - intent + wander per axis, a key is held when it reaches half the key action, giving
-//                 {-1, 0, +1} (KeyboardDrive::kKeyAction): the quantisation of a keyboard;
+//                 {-1, 0, +1} (KeyboardDrive::kKeyAction): the quantisation of a keyboard; a driver who uses
+//                 Shift (`shift_for_gentle_steering`) steers at the nearest of {0, +-0.5, +-1} instead;
 //  * the input rate: control_hz 15 records one action per 1/15 s sub-step (the app's "responsive" mode,
 //    the recorded trial has control_hz 15), control_hz 5 one per 0.2 s control step;
 //  * optionally a planted deficit (PlantedDeficit), applied last, to the action the car receives; a late
@@ -65,7 +66,8 @@ struct RealisticDriverProfile {
   // until the trainer's time limit. end_wait_s, when set, comes first.
   double keeps_trying_until_s = 0.0;
   PlantedDeficit deficit = PlantedDeficit::None;
-  bool follows_path = false;  // closes the loop on the expert's path (path_follower.hpp); draws no numbers
+  bool follows_path = false;               // closes the loop on the expert's path (path_follower.hpp); draws no numbers
+  bool shift_for_gentle_steering = false;  // keyboard only: holds Shift for half lock (KeyboardDrive::kGentleSteer)
 };
 
 // A novice on `device` at 15 Hz: stick noise uniform in [0.05, 0.2], delay uniform in [0.1, 0.3] s (human
@@ -78,8 +80,9 @@ RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng);
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& profile, Rng& rng);
 
 // The keys a keyboard driver holds for `intent`, per axis: a key when the intent reaches half the key action,
-// giving {-1, 0, +1} (KeyboardDrive::kKeyAction).
-ParkingAction keyboard_keys(const ParkingAction& intent);
+// giving {-1, 0, +1} (KeyboardDrive::kKeyAction); with Shift for gentle steering the steering is the nearest of
+// {0, +-0.5, +-1} (KeyboardDrive::kGentleSteer).
+ParkingAction keyboard_keys(const ParkingAction& intent, bool shift_for_gentle_steering = false);
 // The same control steps with keyboard_keys for every (u0, u1) action and the states kept: the expert's
 // motion read through keyboard values (keyed copies in training, keyed_action_agreement).
 StepSequence with_keyboard_keys(StepSequence steps);

@@ -62,13 +62,29 @@ TEST(DriveSkillAgreement, PathFollowingConditionsAreTheNoisyOrKeyedStandardOnesW
   for (const DriveCondition& c : standard) EXPECT_FALSE(c.profile.follows_path) << c.name;
 }
 
+TEST(DriveSkillAgreement, GentleSteeringKeyConditionsAreTheKeyboardRowsWithShift) {
+  std::vector<DriveCondition> keyboard;
+  for (const DriveCondition& c : standard_drive_conditions())
+    if (c.profile.device == DriveDevice::Keyboard) keyboard.push_back(c);
+  const std::vector<DriveCondition> gentle = gentle_steering_key_conditions();
+  ASSERT_EQ(gentle.size(), keyboard.size());
+  ASSERT_FALSE(gentle.empty());
+  for (std::size_t i = 0; i < gentle.size(); ++i) {
+    EXPECT_TRUE(gentle[i].profile.shift_for_gentle_steering) << gentle[i].name;
+    EXPECT_FALSE(keyboard[i].profile.shift_for_gentle_steering) << keyboard[i].name;
+    EXPECT_EQ(gentle[i].profile.stick_noise, keyboard[i].profile.stick_noise);
+    EXPECT_EQ(gentle[i].profile.reaction_delay_s, keyboard[i].profile.reaction_delay_s);
+    EXPECT_EQ(gentle[i].name, "keyboard with Shift" + keyboard[i].name.substr(std::string("keyboard").size()));
+  }
+}
+
 // Reads the steering's sign (left, straight, right): a model that reads actions.
 test::ActionSignExtractor SteeringSignExtractor() { return test::ActionSignExtractor(1); }
 
 TEST(DriveSkillAgreement, KeyedActionsOnTheCleanMotionChangeOnlyWhatAModelReadsFromActions) {
   ParkingTrial drive;
   drive.scenario = parking_pool_scenario(0, 0);
-  for (int i = 0; i < 8; ++i) drive.actions.push_back({0.8, -0.3});  // a key is held from 0.35: no steering key
+  for (int i = 0; i < 8; ++i) drive.actions.push_back({0.8, -0.3});  // a key is held from 0.5: no steering key
   for (int i = 0; i < 12; ++i) drive.actions.push_back({-0.6, 0.9});
   // The time heuristic never reads actions: every step agrees.
   const StepAgreement time = keyed_action_agreement(TimeHeuristicExtractor(3), {drive});

@@ -3,6 +3,7 @@
 #include "teaching/learners/parking/planted_deficit_recovery.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -143,6 +144,28 @@ TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoKeepTryingAreFoundMoreOftenR
   EXPECT_GE(pieces_found, count(one_piece, PlantedDeficit::WeakSteering) + 3) << pieces_found << " in pieces";
   const int pieces_quiet = count(*setup().kit, PlantedDeficit::None);
   EXPECT_GE(pieces_quiet, count(one_piece, PlantedDeficit::None) - 1) << pieces_quiet << " in pieces";
+}
+
+// A keyboard learner who holds Shift steers at half lock where the expert steers gently; the same learner (same
+// draws) on the arrows alone never does, and the other devices' learners drive the same either way.
+TEST(PlantedDeficitRecovery, KeyboardLearnersWhoHoldShiftSteerAtHalfLockAndNobodyElseChanges) {
+  PlantedLearners arrows{setup().pretest, kSeed}, shift = arrows;
+  shift.keyboard_shift = true;
+  auto half_lock_actions = [](const std::vector<Json>& trials) {
+    int n = 0;
+    for (const Json& t : trials)
+      for (const Json& a : t.at("actions")) n += std::abs(a.at(1).get<double>()) == 0.5;
+    return n;
+  };
+  for (int learner : {0, 1, 2}) {  // gamepad, mouse, keyboard
+    const std::vector<Json> with_shift = planted_learner_trials(*setup().kit, shift, PlantedDeficit::None, learner);
+    const std::vector<Json> without = planted_learner_trials(*setup().kit, arrows, PlantedDeficit::None, learner);
+    EXPECT_EQ(half_lock_actions(without), 0) << learner;
+    if (learner == 2)
+      EXPECT_GT(half_lock_actions(with_shift), 10);
+    else
+      EXPECT_EQ(with_shift, without) << learner;
+  }
 }
 
 }  // namespace

@@ -206,6 +206,20 @@ TEST(RealisticDriver, KeyboardKeysAreHeldFromHalfTheKeyAction) {
   EXPECT_EQ(keyboard_keys({0.49, -0.49}), (ParkingAction{0.0, 0.0}));
 }
 
+TEST(RealisticDriver, WithShiftTheSteeringIsTheNearestOfStraightHalfAndFullLock) {
+  EXPECT_EQ(keyboard_keys({0.4, 0.24}, true), (ParkingAction{0.0, 0.0}));
+  EXPECT_EQ(keyboard_keys({0.6, -0.25}, true), (ParkingAction{1.0, -0.5}));
+  EXPECT_EQ(keyboard_keys({-0.6, 0.74}, true), (ParkingAction{-1.0, 0.5}));
+  EXPECT_EQ(keyboard_keys({0.0, -0.75}, true), (ParkingAction{0.0, -1.0}));
+  EXPECT_EQ(keyboard_keys({0.0, 0.6}, false), (ParkingAction{0.0, 1.0}));
+  RealisticDriverProfile p = clean(DriveDevice::Keyboard, 5);
+  p.shift_for_gentle_steering = true;
+  const ParkingTrial d = drive_as(p);  // the hand-made drive steers at -0.3 and +0.9
+  ASSERT_GE(d.actions.size(), 20u);
+  EXPECT_EQ(d.actions[0], (ParkingAction{1.0, -0.5}));
+  EXPECT_EQ(d.actions[19], (ParkingAction{-1.0, 1.0}));
+}
+
 // The expert drives with the pedal at its limit, so the keys must reach it: a drive of full-deflection and neutral
 // actions is one a keyboard reproduces exactly, motion and all.
 TEST(RealisticDriver, KeyboardReproducesADriveAtFullDeflectionExactly) {
