@@ -86,69 +86,6 @@ void check(const ParkingTrial& expert, const RealisticDriverProfile& p) {
     throw InputError("realistic driver", "noise, time constant, delay and waits must be finite and >= 0");
 }
 
-}  // namespace
-
-std::string device_name(DriveDevice device) {
-  switch (device) {
-    case DriveDevice::Gamepad:
-      return "gamepad";
-    case DriveDevice::MouseJoystick:
-      return "mouse";
-    case DriveDevice::Keyboard:
-      return "keyboard";
-  }
-  return "gamepad";
-}
-
-std::string deficit_name(PlantedDeficit deficit) {
-  switch (deficit) {
-    case PlantedDeficit::None:
-      return "none";
-    case PlantedDeficit::NeverReversing:
-      return "never-reversing";
-    case PlantedDeficit::WeakSteering:
-      return "weak-steering";
-    case PlantedDeficit::LateBraking:
-      return "late-braking";
-  }
-  return "none";
-}
-
-RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng) {
-  RealisticDriverProfile p;
-  p.device = device;
-  p.stick_noise = rng.uniform(0.05, 0.2);
-  p.reaction_delay_s = rng.uniform(0.1, 0.3);
-  return p;
-}
-
-std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
-  const std::vector<double> speeds = expert_speeds(expert);
-  std::vector<bool> out(expert.actions.size(), false);
-  for (std::size_t t = 0; t < out.size(); ++t) {
-    const double u0 = clip_action(expert.actions[t])[0];
-    out[t] = std::abs(speeds[t]) >= kMovingSpeed && u0 * speeds[t] < 0.0 && std::abs(u0) >= kBraking;
-  }
-  return out;
-}
-
-ParkingAction keyboard_keys(const ParkingAction& intent, bool shift_for_gentle_steering) {
-  return {key_axis(intent[0]), shift_for_gentle_steering ? gentle_key_axis(intent[1]) : key_axis(intent[1])};
-}
-
-StepSequence with_keyboard_keys(StepSequence steps) {
-  if (steps.action_dim < 2) return steps;
-  std::vector<float>& a = steps.actions;
-  for (std::size_t k = 0; k + 1 < a.size(); k += static_cast<std::size_t>(steps.action_dim)) {
-    const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
-    a[k] = static_cast<float>(keys[0]);
-    a[k + 1] = static_cast<float>(keys[1]);
-  }
-  return steps;
-}
-
-namespace {
-
 // The drive's clock, in input samples.
 struct DriveTiming {
   int per_step = 1;             // input samples per control step
@@ -238,6 +175,65 @@ ParkingAction with_deficit(ParkingAction u, PlantedDeficit deficit, double speed
 }
 
 }  // namespace
+
+std::string device_name(DriveDevice device) {
+  switch (device) {
+    case DriveDevice::Gamepad:
+      return "gamepad";
+    case DriveDevice::MouseJoystick:
+      return "mouse";
+    case DriveDevice::Keyboard:
+      return "keyboard";
+  }
+  return "gamepad";
+}
+
+std::string deficit_name(PlantedDeficit deficit) {
+  switch (deficit) {
+    case PlantedDeficit::None:
+      return "none";
+    case PlantedDeficit::NeverReversing:
+      return "never-reversing";
+    case PlantedDeficit::WeakSteering:
+      return "weak-steering";
+    case PlantedDeficit::LateBraking:
+      return "late-braking";
+  }
+  return "none";
+}
+
+RealisticDriverProfile sample_novice_profile(DriveDevice device, Rng& rng) {
+  RealisticDriverProfile p;
+  p.device = device;
+  p.stick_noise = rng.uniform(0.05, 0.2);
+  p.reaction_delay_s = rng.uniform(0.1, 0.3);
+  return p;
+}
+
+std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
+  const std::vector<double> speeds = expert_speeds(expert);
+  std::vector<bool> out(expert.actions.size(), false);
+  for (std::size_t t = 0; t < out.size(); ++t) {
+    const double u0 = clip_action(expert.actions[t])[0];
+    out[t] = std::abs(speeds[t]) >= kMovingSpeed && u0 * speeds[t] < 0.0 && std::abs(u0) >= kBraking;
+  }
+  return out;
+}
+
+ParkingAction keyboard_keys(const ParkingAction& intent, bool shift_for_gentle_steering) {
+  return {key_axis(intent[0]), shift_for_gentle_steering ? gentle_key_axis(intent[1]) : key_axis(intent[1])};
+}
+
+StepSequence with_keyboard_keys(StepSequence steps) {
+  if (steps.action_dim < 2) return steps;
+  std::vector<float>& a = steps.actions;
+  for (std::size_t k = 0; k + 1 < a.size(); k += static_cast<std::size_t>(steps.action_dim)) {
+    const ParkingAction keys = keyboard_keys({a[k], a[k + 1]});
+    a[k] = static_cast<float>(keys[0]);
+    a[k + 1] = static_cast<float>(keys[1]);
+  }
+  return steps;
+}
 
 ParkingTrial realistic_drive(const ParkingTrial& expert, const RealisticDriverProfile& p, Rng& rng) {
   check(expert, p);
