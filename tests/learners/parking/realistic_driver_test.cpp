@@ -1,6 +1,8 @@
 #include "teaching/learners/parking/realistic_driver.hpp"
 
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -13,16 +15,17 @@
 namespace sc {
 namespace {
 
-// A hand-made drive: forward with a left turn, a hard stop, then reversing with right lock.
-ParkingTrial expert_drive() {
+// An expert drive in pool scenario 0 of `steps` control steps of each action in turn.
+ParkingTrial hand_made_drive(std::initializer_list<std::pair<int, ParkingAction>> runs) {
   ParkingTrial t;
   t.scenario = parking_pool_scenario(0, 0);
-  for (int i = 0; i < 8; ++i) t.actions.push_back({0.8, -0.3});
-  for (int i = 0; i < 4; ++i) t.actions.push_back({-0.9, 0.0});
-  for (int i = 0; i < 8; ++i) t.actions.push_back({-0.6, 0.9});
+  for (const auto& [steps, action] : runs) t.actions.insert(t.actions.end(), static_cast<std::size_t>(steps), action);
   t.source = "expert";
   return t;
 }
+
+// Forward with a left turn, a hard stop, then reversing with right lock.
+ParkingTrial expert_drive() { return hand_made_drive({{8, {0.8, -0.3}}, {4, {-0.9, 0.0}}, {8, {-0.6, 0.9}}}); }
 
 RealisticDriverProfile clean(DriveDevice device, int hz) {
   RealisticDriverProfile p;
@@ -223,12 +226,7 @@ TEST(RealisticDriver, WithShiftTheSteeringIsTheNearestOfStraightHalfAndFullLock)
 // The expert drives with the pedal at its limit, so the keys must reach it: a drive of full-deflection and neutral
 // actions is one a keyboard reproduces exactly, motion and all.
 TEST(RealisticDriver, KeyboardReproducesADriveAtFullDeflectionExactly) {
-  ParkingTrial e;
-  e.scenario = parking_pool_scenario(0, 0);
-  for (int i = 0; i < 6; ++i) e.actions.push_back({1.0, -1.0});
-  for (int i = 0; i < 3; ++i) e.actions.push_back({-1.0, 0.0});
-  for (int i = 0; i < 6; ++i) e.actions.push_back({-1.0, 1.0});
-  e.source = "expert";
+  const ParkingTrial e = hand_made_drive({{6, {1.0, -1.0}}, {3, {-1.0, 0.0}}, {6, {-1.0, 1.0}}});
   Rng rng(1);
   const ParkingTrial d = realistic_drive(e, clean(DriveDevice::Keyboard, 5), rng);
   ASSERT_EQ(d.actions.size(), e.actions.size());
