@@ -184,7 +184,8 @@ class LearnParkingTrialScreen final : public Screen {
       ImGui::TextUnformatted("Watch the ghost car: the stick at the bottom right shows the expert's inputs.");
     if (ghost_ && stage_ == Stage::driving) {
       ImGui::SameLine(0, 30 * s);
-      ImGui::TextDisabled("Follow the ghost band (blue: forward, pink: reversing). Esc pauses.");
+      ImGui::TextDisabled("Follow the ghost band (blue: forward, pink: reversing).%s Esc pauses.",
+                          services_.device.kind == DeviceKind::keyboard ? " Shift steers gently." : "");
     }
     learn_ui::end_header_bar();
   }
