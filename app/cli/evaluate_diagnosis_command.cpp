@@ -3,6 +3,7 @@
 // drivers on each device with a planted deficit (never reversing, weak steering, late braking) or none take
 // the kit's pre-test; the table says how often the deficit's skills fill the top targets and how often a
 // learner gets no skill below the expertise threshold, for Alg. 2 and for quality-aware expertise.
+// --charge-rates prints, per skill, how many noise-only learners Alg. 2 charges with it;
 // --noise-floor prints the learners' segment scores instead (the noise floor the noise-only learners give
 // quality-aware expertise, and how much of each deficit's segments score above it); --apply-noise-floor F
 // measures the table with that floor (ParkingKitOptions::execution_noise_floor; the shipped kit uses none).
@@ -13,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -39,6 +41,7 @@ struct EvaluateDiagnosisArgs {
   unsigned long long seed = 2;
   bool details = false;
   bool noise_floor = false;
+  bool charge_rates = false;
   std::optional<double> apply_noise_floor;
   double start_wait = 0.0;
   double end_wait = 0.0;
@@ -130,6 +133,14 @@ int run(const EvaluateDiagnosisArgs& args) {
     print_noise_floor(*kit, run, args);
     return 0;
   }
+  if (args.charge_rates) {
+    const std::vector<double> rates = noise_only_charge_rates(*kit, run, args.learners);
+    std::printf("noise-only learners charged with each skill (Alg. 2, E_m < 0), of %d:\n", args.learners);
+    for (std::size_t m = 0; m < rates.size(); ++m)
+      std::printf("  skill %2zu: %4ld  %s\n", m, std::lround(rates[m] * args.learners),
+                  kit->describe_skill(static_cast<int>(m)).c_str());
+    return 0;
+  }
   if (args.details) {
     for (int m = 0; m < kit->extractor().num_skills(); ++m) {
       const ParkingSkillMotion& s = kit->skill_motions()[static_cast<std::size_t>(m)];
@@ -172,6 +183,9 @@ CommandRunner setup_evaluate_diagnosis(CLI::App& sub) {
   auto* details =
       sub.add_flag("--details", args->details,
                    "Instead of the table: every skill's words and every learner's first targets (* = a deficit skill)");
+  sub.add_flag("--charge-rates", args->charge_rates,
+               "Instead of the table: how many noise-only learners Alg. 2 charges with each skill (a skill noise alone "
+               "makes learners miss)");
   sub.add_flag("--noise-floor", args->noise_floor,
                "Instead of the table: the learners' segment scores, the noise floor the noise-only learners give "
                "quality-aware expertise and how much of each deficit's segments score above it")

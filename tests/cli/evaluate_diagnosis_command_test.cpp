@@ -42,6 +42,15 @@ TEST(EvaluateDiagnosisCommand, LearnersWhoStandStillReadWholeAreSaidSoAboveTheTa
   EXPECT_NE(one_piece.output.find("long drives read in one piece"), std::string::npos) << one_piece.output;
 }
 
+TEST(EvaluateDiagnosisCommand, ChargeRatesListEverySkillInsteadOfTheTable) {
+  const auto r = run_skillcoach("evaluate-diagnosis --task parking --learners 2 --seed 14 --charge-rates");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("noise-only learners charged with each skill (Alg. 2, E_m < 0), of 2:"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("  skill 15: "), std::string::npos) << r.output;  // the shipped model's 16 skills
+  EXPECT_EQ(table_rows(r.output), 0) << r.output;
+}
+
 TEST(EvaluateDiagnosisCommand, BadOptionsAreOneLineErrors) {
   for (const std::string bad : {"--task parking --start-wait -1", "--task parking --start-wait nan",
                                 "--task parking --end-wait -2", "--task writing"}) {

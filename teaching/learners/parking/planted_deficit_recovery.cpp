@@ -85,4 +85,15 @@ std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const Plan
   return rows;
 }
 
+std::vector<double> noise_only_charge_rates(const ParkingKit& kit, const PlantedLearners& run, int learners) {
+  std::vector<double> rates(static_cast<std::size_t>(kit.extractor().num_skills()), 0.0);
+  for (int i = 0; i < learners; ++i) {
+    const std::vector<Json> trials = planted_learner_trials(kit, run, PlantedDeficit::None, i);
+    const std::vector<double>& e = diagnose_trials(kit, trials, run.seed, ExpertiseMode::Alg2).expertise.expertise;
+    for (std::size_t m = 0; m < rates.size() && m < e.size(); ++m) rates[m] += e[m] < 0.0 ? 1.0 : 0.0;
+  }
+  for (double& r : rates) r /= std::max(1, learners);
+  return rates;
+}
+
 }  // namespace sc

@@ -78,4 +78,8 @@ struct RecoveryRow {
 // Learners 0..learners-1 for every deficit (None, NeverReversing, WeakSteering, LateBraking) x mode.
 std::vector<RecoveryRow> planted_deficit_table(const ParkingKit& kit, const PlantedLearners& run, int learners);
 
+// Per skill id, the share of noise-only learners 0..learners-1 whom Alg. 2 charges with it (E_m < 0). A skill that
+// noise alone makes learners miss is weak evidence of a deficit (docs/skills.md, *A lead, not shipped*).
+std::vector<double> noise_only_charge_rates(const ParkingKit& kit, const PlantedLearners& run, int learners);
+
 }  // namespace sc

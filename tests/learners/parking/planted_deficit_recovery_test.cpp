@@ -146,6 +146,27 @@ TEST(PlantedDeficitRecovery, WeakSteeringLearnersWhoKeepTryingAreFoundMoreOftenR
   EXPECT_GE(pieces_quiet, count(one_piece, PlantedDeficit::None) - 1) << pieces_quiet << " in pieces";
 }
 
+// The charge rates count exactly the noise-only learners whose expertise in a skill is negative: every loud learner's
+// weakest skill is counted, and a skill no expert drive uses never is.
+TEST(PlantedDeficitRecovery, ChargeRatesCountTheNoiseOnlyLearnersChargedWithEachSkill) {
+  const PlantedLearners run{setup().pretest, kSeed};
+  const std::vector<double> rates = noise_only_charge_rates(*setup().kit, run, kLearners);
+  ASSERT_EQ(rates.size(), static_cast<std::size_t>(setup().kit->extractor().num_skills()));
+  std::vector<int> charged(rates.size(), 0);
+  for (int i = 0; i < kLearners; ++i) {
+    const LearnerOutcome o = diagnose_planted_learner(*setup().kit, run, PlantedDeficit::None, ExpertiseMode::Alg2, i);
+    for (std::size_t t = 0; t < o.targets.size(); ++t)
+      if (o.target_per_trial[t] < 0.0) ++charged[static_cast<std::size_t>(o.targets[t])];
+  }
+  for (std::size_t m = 0; m < rates.size(); ++m) {
+    EXPECT_GE(rates[m] * kLearners + 1e-9, charged[m]) << m;  // targets are the first N_target of the ranking
+    if (setup().kit->skill_motions()[m].steps == 0) {
+      EXPECT_EQ(rates[m], 0.0) << m;
+    }
+  }
+  EXPECT_GT(*std::max_element(rates.begin(), rates.end()), 0.0);
+}
+
 // A keyboard learner who holds Shift steers at half lock where the expert steers gently; the same learner (same
 // draws) on the arrows alone never does, and the other devices' learners drive the same either way.
 TEST(PlantedDeficitRecovery, KeyboardLearnersWhoHoldShiftSteerAtHalfLockAndNobodyElseChanges) {
