@@ -106,12 +106,13 @@ int run(const EvaluateDiagnosisArgs& args) {
   const auto* kit = dynamic_cast<const ParkingKit*>(base.get());
   if (!kit) throw InputError("evaluate-diagnosis", "the parking kit did not load");
   if (!kit->extractor_notice().empty()) std::fprintf(stderr, "skillcoach: note: %s\n", kit->extractor_notice().c_str());
-  const PlantedLearners run{select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
-                            args.seed,
-                            args.start_wait,
-                            args.end_wait,
-                            args.keeps_trying,
-                            args.keyboard_shift};
+  const PlantedLearners run{
+      .pretest = select_diverse_scenarios(demo_skills(kit->expert_pool()), args.pretest).scenarios(),
+      .seed = args.seed,
+      .start_wait_s = args.start_wait,
+      .end_wait_s = args.end_wait,
+      .keeps_trying = args.keeps_trying,
+      .keyboard_shift = args.keyboard_shift};
   std::printf("parking, %s, %d learners per row, seed %llu, pre-test of %zu pool drives",
               kit->extractor().name().c_str(), args.learners, args.seed, run.pretest.size());
   if (args.start_wait > 0.0) std::printf(", each learner standing %.1f s before driving", args.start_wait);

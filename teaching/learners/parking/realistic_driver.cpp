@@ -36,18 +36,6 @@ class Wander {
   input::Vec2 value_;
 };
 
-double key_axis(double v) {
-  constexpr double key = input::KeyboardDrive::kKeyAction;
-  return v >= 0.5 * key ? key : (v <= -0.5 * key ? -key : 0.0);
-}
-
-// The nearest of 0, Shift + key and the key alone.
-double gentle_key_axis(double v) {
-  constexpr double gentle = input::KeyboardDrive::kGentleSteer, key = input::KeyboardDrive::kKeyAction;
-  const double size = std::abs(v) < 0.5 * gentle ? 0.0 : (std::abs(v) < 0.5 * (gentle + key) ? gentle : key);
-  return v < 0.0 ? -size : size;
-}
-
 // Intent (u0, u1) plus wander through the device. Wander x is steering, y is throttle (up = forward).
 ParkingAction through_device(const RealisticDriverProfile& p, const ParkingAction& intent, input::Vec2 wander) {
   const DriveDevice device = p.device;
@@ -221,7 +209,19 @@ std::vector<bool> expert_braking_steps(const ParkingTrial& expert) {
 }
 
 ParkingAction keyboard_keys(const ParkingAction& intent, bool shift_for_gentle_steering) {
-  return {key_axis(intent[0]), shift_for_gentle_steering ? gentle_key_axis(intent[1]) : key_axis(intent[1])};
+  using input::DriveKey;
+  constexpr double key = input::KeyboardDrive::kKeyAction, gentle = input::KeyboardDrive::kGentleSteer;
+  // Shift when the steering is nearer half lock than full; a key once the intent reaches half of what it gives.
+  const bool shift = shift_for_gentle_steering && std::abs(intent[1]) < 0.5 * (gentle + key);
+  const double steer_key = shift ? gentle : key;
+  input::KeyboardDrive keys;  // the app's own mapping from held keys to the action
+  keys.set_pressed(DriveKey::Up, intent[0] >= 0.5 * key);
+  keys.set_pressed(DriveKey::Down, intent[0] <= -0.5 * key);
+  keys.set_pressed(DriveKey::LeftShift, shift);
+  keys.set_pressed(DriveKey::Right, intent[1] >= 0.5 * steer_key);
+  keys.set_pressed(DriveKey::Left, intent[1] <= -0.5 * steer_key);
+  const input::DriveAction a = keys.action();
+  return {a.accel, a.steer};
 }
 
 StepSequence with_keyboard_keys(StepSequence steps) {
